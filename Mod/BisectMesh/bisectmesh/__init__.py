@@ -1,0 +1,129 @@
+"""BisectMesh for FreeCAD: tetrahedral meshing by domain bisection, and mesh quality.
+
+The macro API (the workbench's commands are thin wrappers over it)::
+
+    import bisectmesh
+    report = bisectmesh.quality(femmesh)   # a Fem.FemMesh or a FEM mesh object
+    report["valid"], report["gamma_mean"], report["measures"]["gamma"]["histogram"]
+
+The measures are defined once in the C++ core (``libbisect/include/bisect/quality.hpp``) and
+computed there; this package moves the mesh between FreeCAD and the core and keeps FreeCAD's
+node and element ids in everything it reports.
+"""
+
+__version__ = "0.1.0"
+
+MEASURES = ("dihedral_min", "dihedral_max", "solid_angle_min", "gamma", "alpha")
+
+
+def core():
+    """The compiled module ``bisectmesh._core``, with a plain message when it is missing."""
+    try:
+        from . import _core
+    except ImportError as err:
+        raise ImportError(
+            "bisectmesh._core, the compiled part of BisectMesh, cannot be loaded (%s). Build it with "
+            "CMake (target bisectmesh_core) and install the workbench again." % err) from err
+    return _core
+
+
+def _plain(value):
+    """NumPy scalars and arrays to plain Python, so that a report survives json.dumps."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    return value
+
+
+def mesh_arrays(femmesh):
+    """The tetrahedra of a Fem.FemMesh (or FEM mesh object) as arrays in the core's convention;
+    see :class:`bisectmesh.femmesh_arrays.MeshArrays`."""
+    from .femmesh_arrays import femmesh_to_arrays
+
+    return femmesh_to_arrays(femmesh)
+
+
+def element_quality(femmesh, arrays=None):
+    """Per-tetrahedron measures: (tet_ids, {measure: array}) with NumPy arrays in the order of
+    ``tet_ids`` (FreeCAD element ids). Measures: volume (of the positively oriented element;
+    negative when FreeCAD's element is inverted), dihedral_min, dihedral_max (degrees),
+    solid_angle_min (sr), gamma, alpha."""
+    arrays = mesh_arrays(femmesh) if arrays is None else arrays
+    return arrays.tet_ids, dict(core().element_quality(arrays.nodes, arrays.tets))
+
+
+def quality(femmesh, validate=True, per_element=False):
+    """Quality and validity of the tetrahedra of a FEM mesh, as a JSON-friendly dict.
+
+    femmesh      a Fem.FemMesh, or a document object with a FemMesh property
+    validate     also run the mesh validator (orientation, conformity, closed boundary, ...)
+    per_element  also return every element's measures under "per_element"
+
+    The dict holds the core's quality summary: ``tets``, ``dihedral_min``, ``dihedral_max``,
+    ``solid_angle_min``, ``solid_angle_mean``, ``gamma_mean``, ``gamma_min``, ``alpha_mean``,
+    ``pct_dihedral_below_10`` and ``measures`` ({name: {min, mean, max, lo, hi, histogram}} for
+    dihedral_min, dihedral_max, solid_angle_min, gamma, alpha); and besides:
+
+    ``nodes``            node count of the FemMesh
+    ``order``            1 or 2
+    ``skipped_volumes``  {kind: count} of volume elements that are not tetrahedra
+    ``valid``            True/False, or None when not validated
+    ``violations``       [{kind, ids, message}], ids being FreeCAD node or element ids
+    ``per_element``      {ids: [element ids], volume: [...], dihedral_min: [...], ...}
+
+    Raises ValueError when the mesh has no tetrahedra.
+    """
+    arrays = mesh_arrays(femmesh)
+    if len(arrays.tets) == 0:
+        other = ", ".join("%d %s" % (n, k) for k, n in sorted(arrays.skipped.items()))
+        raise ValueError("the FEM mesh has no tetrahedra" + (" (it has %s)" % other if other else ""))
+    c = core()
+    report = _plain(dict(c.quality_summary(arrays.nodes, arrays.tets)))
+    report["nodes"] = int(len(arrays.nodes))
+    report["order"] = int(arrays.order)
+    report["skipped_volumes"] = dict(arrays.skipped)
+    report["valid"] = None
+    report["violations"] = []
+    if validate:
+        report["violations"] = _violations(c, arrays)
+        report["valid"] = not report["violations"]
+    if per_element:
+        ids, measures = element_quality(femmesh, arrays)
+        table = {"ids": _plain(ids)}
+        table.update({name: _plain(values) for name, values in measures.items()})
+        report["per_element"] = table
+    return report
+
+
+def _violations(c, arrays):
+    found = []
+    for v in c.validate(arrays.nodes, arrays.tets, node_ids=arrays.node_ids, tet_ids=arrays.tet_ids):
+        found.append(_plain(dict(v)))
+    if arrays.skipped:
+        # Other volume elements close the mesh where the tetrahedra stop and use nodes of their
+        # own: judged on the tetrahedra alone, such faces and nodes are not defects.
+        found = [v for v in found if v["kind"] not in ("open_boundary", "unused_node")]
+    return found
+
+
+def format_report(report):
+    """A few lines of text for the report view or a console."""
+    lines = ["%d tetrahedra (order %d), %d nodes" % (report["tets"], report["order"], report["nodes"])]
+    if report.get("skipped_volumes"):
+        lines.append("not tetrahedra, skipped: " + ", ".join(
+            "%d %s" % (n, k) for k, n in sorted(report["skipped_volumes"].items())))
+    if report.get("valid") is True:
+        lines.append("valid: no inverted or degenerate elements, conforming, closed boundary")
+    elif report.get("valid") is False:
+        lines.append("NOT valid: %d problem(s)" % len(report["violations"]))
+        lines.extend("  " + v["message"] for v in report["violations"][:20])
+    lines.append("dihedral angles %.2f .. %.2f deg, %.2f%% of elements below 10 deg" % (
+        report["dihedral_min"], report["dihedral_max"], report["pct_dihedral_below_10"]))
+    lines.append("minimum solid angle %.4f sr (mean of element minima %.4f)" % (
+        report["solid_angle_min"], report["solid_angle_mean"]))
+    lines.append("gamma min %.4f mean %.4f, alpha mean %.4f" % (
+        report["gamma_min"], report["gamma_mean"], report["alpha_mean"]))
+    return "\n".join(lines)

@@ -1,0 +1,22 @@
+// The subcommands of bisect-mesh. Each returns the process exit code (ARCHITECTURE.md §3) and
+// lets bisect::InputError / MeshingError propagate to main, which prints them as one line.
+#pragma once
+#include <iosfwd>
+#include <string>
+
+namespace bisect::cli {
+
+struct CommonOptions {
+  bool json = false;   // machine-readable output on stdout
+  bool quiet = false;  // nothing on stdout but what was asked for
+};
+
+// `bisect-mesh info INPUT`: read and check a polyhedral (.poly/.stl/.off) or polygonal (.poly2)
+// input; print its regions, faces, nodes, bounding box and volume (area in 2D).
+int run_info(const std::string& input, const CommonOptions& opt, std::ostream& out, std::ostream& err);
+
+// `bisect-mesh quality MESH`: read a .vtu/.msh/.inp tetrahedral mesh, print the validity check
+// and the quality summary. Exit 0 when the mesh is valid, 2 when it violates an invariant.
+int run_quality(const std::string& mesh, const CommonOptions& opt, std::ostream& out, std::ostream& err);
+
+}  // namespace bisect::cli

@@ -1,0 +1,81 @@
+// bisect-mesh: the command-line face of the library. Exit codes (ARCHITECTURE.md §3): 0 done;
+// 2 bad input or options, with one line on stderr naming what and where; 3 the mesher could not
+// finish. No exception escapes: every failure becomes such a line.
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bisect/errors.hpp"
+#include "commands.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: bisect-mesh COMMAND [OPTIONS] FILE\n"
+    "\n"
+    "commands:\n"
+    "  info INPUT      read and check a polyhedral input (.poly, .stl, .off) or a 2D input\n"
+    "                  (.poly2); print its regions, faces, nodes, bounding box and volume\n"
+    "  quality MESH    read a tetrahedral mesh (.vtu, .msh, .inp), check its validity and print\n"
+    "                  its quality summary; exit 2 when the mesh is invalid\n"
+    "\n"
+    "options:\n"
+    "  --json          print machine-readable JSON instead of text\n"
+    "  --quiet         print nothing but errors (the exit code tells the result)\n"
+    "  -h, --help      print this help\n"
+    "  --version       print the version\n"
+    "\n"
+    "exit codes: 0 done; 2 bad input or options; 3 the mesher could not finish\n";
+
+int usage_error(const std::string& what) {
+  std::cerr << "bisect-mesh: " << what << " (see bisect-mesh --help)\n";
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  bisect::cli::CommonOptions opt;
+  std::vector<std::string> positional;
+  for (const std::string& a : args) {
+    if (a == "-h" || a == "--help") {
+      std::cout << kUsage;
+      return 0;
+    } else if (a == "--version") {
+      std::cout << "bisect-mesh 0.1.0\n";
+      return 0;
+    } else if (a == "--json") {
+      opt.json = true;
+    } else if (a == "--quiet" || a == "-q") {
+      opt.quiet = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      return usage_error("unknown option '" + a + "'");
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.empty()) return usage_error("no command given");
+  const std::string& cmd = positional[0];
+  if (cmd != "info" && cmd != "quality")
+    return usage_error("unknown command '" + cmd + "'; the commands are info and quality");
+  if (positional.size() != 2) return usage_error(cmd + " takes exactly one file");
+  try {
+    if (cmd == "info") return bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
+    return bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
+  } catch (const bisect::InputError& e) {
+    std::cerr << "bisect-mesh: " << e.what() << "\n";
+    return 2;
+  } catch (const bisect::MeshingError& e) {
+    std::cerr << "bisect-mesh: " << e.what() << "\n";
+    return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "bisect-mesh: out of memory\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "bisect-mesh: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

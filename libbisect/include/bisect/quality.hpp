@@ -1,0 +1,56 @@
+// Tetrahedral quality measures (ARCHITECTURE.md §3), defined once and used by the tests, the
+// CLI, the Python module and the workbench.
+//
+// Units: dihedral angles in degrees, solid angles in steradians. For the regular tetrahedron:
+// dihedral angles arccos(1/3) = 70.5288°, solid angles arccos(23/27) = 0.5513 sr, gamma 1,
+// alpha 1/3. All measures are invariant under reflection (an inverted tetrahedron grades as its
+// mirror image; validity is the validator's job) and are 0 for a degenerate tetrahedron.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "bisect/tet_mesh.hpp"
+
+namespace bisect {
+
+struct TetQuality {
+  double volume = 0;           // signed: positive for the orientation of tet_mesh.hpp
+  double dihedral_min = 0;     // degrees
+  double dihedral_max = 0;     // degrees
+  double solid_angle_min = 0;  // steradians, Van Oosterom–Strackee (thesis 2.4.1)
+  double gamma = 0;            // 374.123 V^2 / S^3 (thesis 2.4.2), 1 when regular
+  double alpha = 0;            // inradius / circumradius (thesis 8.3.1), 1/3 when regular
+};
+
+TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+// Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
+std::vector<TetQuality> element_quality(const TetMesh& mesh);
+
+struct MeasureStats {
+  double min = 0, mean = 0, max = 0;
+  double lo = 0, hi = 0;                // histogram range; bins are equal slices of [lo, hi]
+  std::vector<std::size_t> histogram;   // values outside [lo, hi] are clamped into the end bins
+};
+
+struct QualitySummary {
+  std::size_t tets = 0;
+  MeasureStats dihedral_min;     // histogram over [0, 90] degrees, 18 bins of 5 degrees
+  MeasureStats dihedral_max;     // over [0, 180], 18 bins of 10 degrees
+  MeasureStats solid_angle_min;  // over [0, 0.6] sr, 12 bins
+  MeasureStats gamma;            // over [0, 1], 10 bins
+  MeasureStats alpha;            // over [0, 1/3], 10 bins
+  double pct_dihedral_below_10 = 0;  // percentage of tetrahedra whose minimum dihedral < 10°
+};
+
+QualitySummary summarize_quality(const std::vector<TetQuality>& q);
+
+// The summary as the JSON object of the --stats "quality" contract (ARCHITECTURE.md §3) plus the
+// per-measure statistics and histograms: {"tets":..,"dihedral_min":..,"dihedral_max":..,
+// "solid_angle_min":..,"solid_angle_mean":..,"gamma_mean":..,"gamma_min":..,"alpha_mean":..,
+// "pct_dihedral_below_10":.., "measures": {"dihedral_min": {"min","mean","max","lo","hi",
+// "histogram"}, ...}}
+std::string quality_json(const QualitySummary& s);
+
+}  // namespace bisect

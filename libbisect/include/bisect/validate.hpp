@@ -1,0 +1,38 @@
+// The mesh validator: every violation of the invariants of ARCHITECTURE.md §3, with ids.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bisect/tet_mesh.hpp"
+
+namespace bisect {
+
+enum class ViolationKind {
+  BadNodeIndex,     // a tetrahedron or triangle refers to a node that does not exist; ids: element
+  RepeatedNode,     // a tetrahedron uses one node twice; ids: tetrahedron
+  InvertedTet,      // negative orientation (exact orient3d); ids: tetrahedron
+  ZeroVolumeTet,    // the four corners are coplanar (exact); ids: tetrahedron
+  NonManifoldFace,  // a face shared by more than two tetrahedra; ids: the tetrahedra
+  OpenBoundary,     // an edge of the boundary surface used by an odd number of boundary faces;
+                    // ids: the edge's two nodes
+  DuplicateNode,    // two nodes at the same coordinates; ids: the nodes
+  UnusedNode,       // a node no tetrahedron uses; ids: the node
+  BadMidNode,       // order 2: a mid-edge node shared inconsistently by two tetrahedra of the
+                    // same edge; ids: the tetrahedra
+};
+
+// The kind as a snake_case name ("inverted_tet"), the spelling of the CLI's JSON and Python.
+const char* to_string(ViolationKind k);
+
+struct Violation {
+  ViolationKind kind;
+  std::vector<std::int64_t> ids;  // element or node numbers as reported (TetMesh::tet_id/node_id)
+  std::string message;            // one line naming what and where
+};
+
+// All violations, in a stable order (by kind, then by id). An empty result means a valid mesh.
+// Mid-edge nodes of order-2 meshes count as used.
+std::vector<Violation> validate(const TetMesh& mesh);
+
+}  // namespace bisect

@@ -1,0 +1,229 @@
+// bisectmesh._core: the C++ library as FreeCAD's Python sees it. Arrays cross as NumPy arrays
+// (nodes #N by 3 float64, tets #T by 4|10 integer, 0-based node indices); dicts carry the rest.
+// The GIL is released while C++ works so that a FreeCAD GUI thread stays responsive.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+
+#include "bisect/errors.hpp"
+#include "bisect/io.hpp"
+#include "bisect/poly_input.hpp"
+#include "bisect/quality.hpp"
+#include "bisect/validate.hpp"
+
+namespace py = pybind11;
+using namespace bisect;
+
+namespace {
+
+using NodeArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+// Builds a TetMesh from NumPy arrays, checking shapes and index ranges so that a wrong argument
+// is a Python exception, not a read out of bounds.
+TetMesh mesh_from_arrays(const NodeArray& nodes, const IndexArray& tets, const py::object& region,
+                         const py::object& node_ids, const py::object& tet_ids) {
+  if (nodes.ndim() != 2 || nodes.shape(1) != 3)
+    throw InputError("nodes must be an array of shape (N, 3)");
+  if (tets.ndim() != 2 || (tets.shape(1) != 4 && tets.shape(1) != 10))
+    throw InputError("tets must be an array of shape (M, 4) or (M, 10)");
+  TetMesh m;
+  m.order = tets.shape(1) == 10 ? 2 : 1;
+  const auto n = nodes.unchecked<2>();
+  m.nodes.resize(n.shape(0));
+  for (py::ssize_t i = 0; i < n.shape(0); ++i) m.nodes[i] = Vec3(n(i, 0), n(i, 1), n(i, 2));
+  const auto t = tets.unchecked<2>();
+  m.tets.resize(t.shape(0) * t.shape(1));
+  for (py::ssize_t i = 0; i < t.shape(0); ++i)
+    for (py::ssize_t j = 0; j < t.shape(1); ++j) {
+      const std::int64_t v = t(i, j);
+      if (v < 0 || v >= n.shape(0))
+        throw InputError("tets[" + std::to_string(i) + "] refers to node index " + std::to_string(v) +
+                         ", but there are " + std::to_string(n.shape(0)) + " nodes");
+      m.tets[i * t.shape(1) + j] = Index(v);
+    }
+  if (!region.is_none()) m.region = region.cast<std::vector<Index>>();
+  else m.region.assign(t.shape(0), 0);
+  if (m.region.size() != std::size_t(t.shape(0))) throw InputError("region must have one entry per tetrahedron");
+  if (!node_ids.is_none()) m.node_ids = node_ids.cast<std::vector<std::int64_t>>();
+  if (!tet_ids.is_none()) m.tet_ids = tet_ids.cast<std::vector<std::int64_t>>();
+  if (!m.node_ids.empty() && m.node_ids.size() != m.nodes.size())
+    throw InputError("node_ids must have one entry per node");
+  if (!m.tet_ids.empty() && m.tet_ids.size() != m.num_tets())
+    throw InputError("tet_ids must have one entry per tetrahedron");
+  return m;
+}
+
+template <class T>
+py::array_t<T> to_array(const std::vector<T>& v, py::ssize_t cols = 1) {
+  if (cols == 1) return py::array_t<T>(py::ssize_t(v.size()), v.data());
+  return py::array_t<T>({py::ssize_t(v.size()) / cols, cols}, v.data());
+}
+
+py::dict mesh_to_dict(const TetMesh& m) {
+  std::vector<double> xyz;
+  xyz.reserve(m.nodes.size() * 3);
+  for (const Vec3& p : m.nodes) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  py::dict d;
+  d["order"] = m.order;
+  d["nodes"] = to_array(xyz, 3);
+  d["tets"] = to_array(m.tets, m.nodes_per_tet());
+  d["region"] = to_array(m.region);
+  d["tris"] = to_array(m.tris, m.nodes_per_tri());
+  d["tri_tag"] = to_array(m.tri_tag);
+  d["node_ids"] = to_array(m.node_ids);
+  d["tet_ids"] = to_array(m.tet_ids);
+  return d;
+}
+
+// One JSON writer (quality_json) serves the CLI and Python alike, so both report the same keys.
+py::object json_loads(const std::string& s) { return py::module_::import("json").attr("loads")(s); }
+
+std::string violation_kind_name(ViolationKind k) { return to_string(k); }
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "BisectMesh C++ core: quality measures, mesh validation, mesh and polyhedral I/O.";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<MeshingError>(m, "MeshingError", PyExc_RuntimeError);
+
+  m.def(
+      "element_quality",
+      [](const NodeArray& nodes, const IndexArray& tets) {
+        const TetMesh mesh = mesh_from_arrays(nodes, tets, py::none(), py::none(), py::none());
+        std::vector<TetQuality> q;
+        {
+          py::gil_scoped_release release;
+          q = element_quality(mesh);
+        }
+        const py::ssize_t n = py::ssize_t(q.size());
+        py::array_t<double> vol(n), dmin(n), dmax(n), solid(n), gamma(n), alpha(n);
+        auto v = vol.mutable_unchecked<1>(), a = dmin.mutable_unchecked<1>(), b = dmax.mutable_unchecked<1>(),
+             s = solid.mutable_unchecked<1>(), g = gamma.mutable_unchecked<1>(), al = alpha.mutable_unchecked<1>();
+        for (py::ssize_t i = 0; i < n; ++i) {
+          v(i) = q[i].volume;
+          a(i) = q[i].dihedral_min;
+          b(i) = q[i].dihedral_max;
+          s(i) = q[i].solid_angle_min;
+          g(i) = q[i].gamma;
+          al(i) = q[i].alpha;
+        }
+        py::dict d;
+        d["volume"] = vol;
+        d["dihedral_min"] = dmin;
+        d["dihedral_max"] = dmax;
+        d["solid_angle_min"] = solid;
+        d["gamma"] = gamma;
+        d["alpha"] = alpha;
+        return d;
+      },
+      py::arg("nodes"), py::arg("tets"),
+      "Per-tetrahedron measures: volume (signed), dihedral_min/max (degrees), solid_angle_min (sr), "
+      "gamma, alpha.");
+
+  m.def(
+      "quality_summary",
+      [](const NodeArray& nodes, const IndexArray& tets) {
+        const TetMesh mesh = mesh_from_arrays(nodes, tets, py::none(), py::none(), py::none());
+        std::string json;
+        {
+          py::gil_scoped_release release;
+          json = quality_json(summarize_quality(element_quality(mesh)));
+        }
+        return json_loads(json);
+      },
+      py::arg("nodes"), py::arg("tets"), "The quality summary (min, mean, max, histograms) as a dict.");
+
+  m.def(
+      "validate",
+      [](const NodeArray& nodes, const IndexArray& tets, const py::object& node_ids, const py::object& tet_ids) {
+        const TetMesh mesh = mesh_from_arrays(nodes, tets, py::none(), node_ids, tet_ids);
+        std::vector<Violation> found;
+        {
+          py::gil_scoped_release release;
+          found = validate(mesh);
+        }
+        py::list out;
+        for (const Violation& v : found) {
+          py::dict d;
+          d["kind"] = violation_kind_name(v.kind);
+          d["ids"] = v.ids;
+          d["message"] = v.message;
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("nodes"), py::arg("tets"), py::arg("node_ids") = py::none(), py::arg("tet_ids") = py::none(),
+      "Every violation of the mesh invariants as dicts {kind, ids, message}; empty when valid.");
+
+  m.def(
+      "read_mesh",
+      [](const std::string& path) {
+        TetMesh mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = read_mesh(path);
+        }
+        return mesh_to_dict(mesh);
+      },
+      py::arg("path"), "Reads a .vtu, .msh or .inp tetrahedral mesh.");
+
+  m.def(
+      "write_mesh",
+      [](const std::string& path, const NodeArray& nodes, const IndexArray& tets, const py::object& region,
+         const py::object& tris, const py::object& tri_tag) {
+        TetMesh mesh = mesh_from_arrays(nodes, tets, region, py::none(), py::none());
+        if (!tris.is_none()) {
+          const IndexArray t = tris.cast<IndexArray>();
+          if (t.ndim() != 2 || t.shape(1) != mesh.nodes_per_tri())
+            throw InputError("tris must be an array of shape (B, " + std::to_string(mesh.nodes_per_tri()) + ")");
+          const auto u = t.unchecked<2>();
+          for (py::ssize_t i = 0; i < u.shape(0); ++i)
+            for (py::ssize_t j = 0; j < u.shape(1); ++j) {
+              if (u(i, j) < 0 || u(i, j) >= py::ssize_t(mesh.nodes.size()))
+                throw InputError("tris[" + std::to_string(i) + "] refers to a node that does not exist");
+              mesh.tris.push_back(Index(u(i, j)));
+            }
+          mesh.tri_tag = tri_tag.is_none() ? std::vector<Index>(u.shape(0), 0) : tri_tag.cast<std::vector<Index>>();
+          if (mesh.tri_tag.size() != mesh.num_tris()) throw InputError("tri_tag must have one entry per triangle");
+        }
+        py::gil_scoped_release release;
+        write_mesh(mesh, path);
+      },
+      py::arg("path"), py::arg("nodes"), py::arg("tets"), py::arg("region") = py::none(), py::arg("tris") = py::none(),
+      py::arg("tri_tag") = py::none(), "Writes .vtu, .msh (4.1 ASCII), .inp or .unv by the path's extension.");
+
+  m.def(
+      "summarize_input",
+      [](const std::string& path) {
+        PolySummary s;
+        {
+          py::gil_scoped_release release;
+          s = summarize(read_polyhedral(path));
+        }
+        py::list regions;
+        for (const RegionSummary& r : s.regions) {
+          py::dict d;
+          d["faces"] = r.faces;
+          d["nodes"] = r.nodes;
+          d["shells"] = r.shells;
+          d["holes"] = r.holes;
+          d["cavity"] = r.cavity;
+          d["inside"] = r.inside < 0 ? py::object(py::none()) : py::object(py::int_(r.inside));
+          d["volume"] = r.volume;
+          regions.append(d);
+        }
+        py::dict d;
+        d["regions"] = regions;
+        d["faces"] = s.faces;
+        d["nodes"] = s.nodes;
+        d["bbox_min"] = py::make_tuple(s.bbox_min.x(), s.bbox_min.y(), s.bbox_min.z());
+        d["bbox_max"] = py::make_tuple(s.bbox_max.x(), s.bbox_max.y(), s.bbox_max.z());
+        d["volume"] = s.volume;
+        return d;
+      },
+      py::arg("path"), "Reads and checks a .poly, .stl or .off input; returns what `bisect-mesh info` prints.");
+}

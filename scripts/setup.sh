@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# One command for a fresh Debian 12 machine: installs the missing packages, builds in Release,
+# installs the FreeCAD workbench into FreeCAD's user Mod folder and bisect-mesh into
+# ~/.local/bin (or $PREFIX/bin), then runs bisect-mesh on the bundled examples.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BISECTMESH_BUILD_DIR:-$root/build}
+prefix=${PREFIX:-$HOME/.local}
+
+"$root/scripts/deps.sh"
+"$root/scripts/build.sh"
+cmake --install "$build" --prefix "$prefix"
+
+mod_dir=$(sed -n 's/^BISECTMESH_MOD_DIR:PATH=//p' "$build/CMakeCache.txt")
+echo
+echo "Installed: $prefix/bin/bisect-mesh and the FreeCAD workbench in $mod_dir/BisectMesh"
+# Checks that a plain FreeCAD console session finds the installed workbench.
+freecadcmd -c "import bisectmesh, os; print('FreeCAD imports bisectmesh from ' + os.path.dirname(bisectmesh.__file__))" \
+  2>/dev/null | grep "FreeCAD imports"
+echo
+echo "\$ bisect-mesh info examples/cube-cavity-adjacent-cube.poly"
+"$prefix/bin/bisect-mesh" info "$root/examples/cube-cavity-adjacent-cube.poly"
+echo
+echo "\$ bisect-mesh quality examples/box-minus-cylinder.msh"
+"$prefix/bin/bisect-mesh" quality "$root/examples/box-minus-cylinder.msh"

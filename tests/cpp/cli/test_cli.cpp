@@ -1,0 +1,154 @@
+// bisect-mesh run as a user runs it: exit codes, the lines it prints, the one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+fs::path scratch_dir() {
+  fs::path d = fs::temp_directory_path() / ("bisect_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+CliResult run(const std::string& args) {
+  const fs::path d = scratch_dir();
+  const std::string cmd = std::string("'") + BISECT_CLI + "' " + args + " >'" + (d / "out").string() + "' 2>'" +
+                          (d / "err").string() + "'";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(d / "out");
+  r.err = slurp(d / "err");
+  return r;
+}
+
+fs::path write_file(const std::string& name, const std::string& text) {
+  const fs::path p = scratch_dir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const std::string kExamples = BISECT_EXAMPLES_DIR;
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST(Cli, HelpAndVersion) {
+  CliResult r = run("--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("info INPUT"), std::string::npos);
+  EXPECT_NE(r.out.find("quality MESH"), std::string::npos);
+  r = run("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("bisect-mesh"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitTwoWithOneLine) {
+  for (const char* args : {"", "frobnicate x.poly", "info", "info --bogus x.poly", "info a.poly b.poly"}) {
+    const CliResult r = run(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << args;
+  }
+}
+
+TEST(Cli, InfoOnTheThesisCubeWithCavity) {
+  const CliResult r = run("info '" + kExamples + "/cube-cavity-adjacent-cube.poly'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 regions, 17 faces, 20 nodes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bounding box: (0, 0, 0) to (2, 1, 1)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("region 1: 6 faces, 8 nodes, 1 shell, volume 0.875"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("region 2: 6 faces, 8 nodes, 1 shell, volume 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("region 3: cavity, 6 faces, 8 nodes, 1 shell, inside region 1, volume 0.125"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("volume: 1.875"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoJson) {
+  const CliResult r = run("info --json '" + kExamples + "/cube-cavity-adjacent-cube.poly'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_NE(r.out.find("\"cavity\":true,\"inside\":1,\"volume\":0.125"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"required_elements\":26"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"volume\":1.875}"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoOnPoly2) {
+  const fs::path p = write_file("hole.poly2",
+                                "50\n10 3\n4 4 -4\n0 0\n1 0\n1 1\n0 1\n2 0\n2 1\n"
+                                "0.25 0.25\n0.75 0.25\n0.75 0.75\n0.25 0.75\n1 2 3 4\n2 5 6 3\n7 8 9 10\n");
+  const CliResult r = run("info '" + p.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("polygon 1: region, 4 nodes, area 1, net area 0.75"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("polygon 3: hole, 4 nodes, inside polygon 1, area 0.25"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("area: 1.75"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InfoBadInputNamesTheFaceAndExitsTwo) {
+  const fs::path p = write_file("bad.poly",
+                                "1 3 1 10\n0 0 0\n1 0 0\n0 1 0\n3 1 2 9\n1 1\n");
+  const CliResult r = run("info '" + p.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("bad.poly"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("node 9"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
+TEST(Cli, InfoMissingFile) {
+  const CliResult r = run("info /nonexistent/file.poly");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("/nonexistent/file.poly"), std::string::npos) << r.err;
+}
+
+TEST(Cli, QualityOfTheBundledGmshMesh) {
+  const CliResult r = run("quality '" + kExamples + "/box-minus-cylinder.msh'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("valid: yes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("min dihedral angle"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gamma histogram"), std::string::npos) << r.out;
+  const CliResult j = run("quality --json '" + kExamples + "/box-minus-cylinder.msh'");
+  ASSERT_EQ(j.code, 0) << j.err;
+  EXPECT_NE(j.out.find("\"valid\":true"), std::string::npos);
+  EXPECT_NE(j.out.find("\"pct_dihedral_below_10\""), std::string::npos);
+}
+
+TEST(Cli, QualityOfAnInvalidMeshNamesTheElement) {
+  // Element 7 is inverted (its last two corners swapped); element 8 is positive.
+  const fs::path p = write_file("inverted.inp",
+                                "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n5, 1, 1, 1\n"
+                                "*ELEMENT, TYPE=C3D4, ELSET=Solid\n7, 1, 2, 4, 3\n8, 2, 3, 4, 5\n");
+  const CliResult r = run("quality '" + p.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("valid: no"), std::string::npos) << r.out;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("7"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("invert"), std::string::npos) << r.err;
+}
