@@ -20,6 +20,8 @@ enum class ViolationKind {
   UnusedNode,       // a node no tetrahedron uses; ids: the node
   BadMidNode,       // order 2: a mid-edge node shared inconsistently by two tetrahedra of the
                     // same edge; ids: the tetrahedra
+  NonFiniteNode,    // a node with a NaN or infinite coordinate; ids: the node (the tetrahedra
+                    // using it are not judged for orientation)
 };
 
 // The kind as a snake_case name ("inverted_tet"), the spelling of the CLI's JSON and Python.

@@ -28,6 +28,7 @@ const char* to_string(ViolationKind k) {
     case ViolationKind::DuplicateNode: return "duplicate_node";
     case ViolationKind::UnusedNode: return "unused_node";
     case ViolationKind::BadMidNode: return "bad_mid_node";
+    case ViolationKind::NonFiniteNode: return "non_finite_node";
   }
   return "Unknown";
 }
@@ -82,6 +83,7 @@ public:
       : m_(mesh), nn_(mesh.nodes.size()), nt_(mesh.num_tets()), npt_(mesh.nodes_per_tet()) {}
 
   std::vector<Violation> run() {
+    check_node_coordinates();
     check_elements();
     check_triangles();
     check_faces();
@@ -110,6 +112,18 @@ private:
     out_.push_back(Violation{kind, std::move(ids), std::move(message)});
   }
 
+  // NaN or infinite coordinates (a division by zero upstream, a corrupt file): such a node has
+  // no place, so the orientation of the tetrahedra using it means nothing and is not judged.
+  void check_node_coordinates() {
+    finite_.assign(nn_, 1);
+    for (std::size_t n = 0; n < nn_; ++n)
+      if (!m_.nodes[n].allFinite()) {
+        finite_[n] = 0;
+        const std::int64_t id = m_.node_id(n);
+        add(ViolationKind::NonFiniteNode, {id}, "node " + num(id) + " has a non-finite coordinate " + point(m_.nodes[n]));
+      }
+  }
+
   // Node indices, repeated nodes and orientation, one tetrahedron at a time. Tetrahedra that
   // name a missing node or repeat one are kept out of the face and edge checks: their faces
   // are not triangles of the mesh.
@@ -132,6 +146,7 @@ private:
       }
       if (report_repeated(t, v)) continue;
       well_formed_[t] = 1;
+      if (!finite_[v[0]] || !finite_[v[1]] || !finite_[v[2]] || !finite_[v[3]]) continue;
       const int sign = geom::orient3d(m_.nodes[v[0]], m_.nodes[v[1]], m_.nodes[v[2]], m_.nodes[v[3]]);
       if (sign < 0)
         add(ViolationKind::InvertedTet, {id}, "tetrahedron " + num(id) + " is inverted (orient3d < 0): " + corners(t));
@@ -315,6 +330,7 @@ private:
   const int npt_;
   std::vector<char> used_;
   std::vector<char> well_formed_;
+  std::vector<char> finite_;
   std::vector<Violation> out_;
 };
 

@@ -2,6 +2,8 @@
 // broken mesh and reported with the right ids.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <string>
 
 #include "bisect/validate.hpp"
@@ -199,6 +201,7 @@ TEST(Validate, NaNCoordinatesAreNoDuplicates) {
   const auto v = validate(m);
   EXPECT_TRUE(of_kind(v, ViolationKind::DuplicateNode).empty()) << describe(v);
   EXPECT_EQ(of_kind(v, ViolationKind::UnusedNode).size(), 2u);
+  EXPECT_EQ(of_kind(v, ViolationKind::NonFiniteNode).size(), 2u);
 }
 
 TEST(Validate, UnusedNode) {
@@ -262,6 +265,23 @@ TEST(Validate, KindNames) {
   EXPECT_STREQ(to_string(ViolationKind::DuplicateNode), "duplicate_node");
   EXPECT_STREQ(to_string(ViolationKind::UnusedNode), "unused_node");
   EXPECT_STREQ(to_string(ViolationKind::BadMidNode), "bad_mid_node");
+  EXPECT_STREQ(to_string(ViolationKind::NonFiniteNode), "non_finite_node");
+}
+
+TEST(Validate, NonFiniteNodeIsNamedAndItsTetrahedraAreNotJudged) {
+  // Node 2 of the two-tet mesh moved to infinity, node 3 to NaN: both are named; the
+  // tetrahedra using them are neither inverted nor flat, since they have no shape at all.
+  TetMesh m = test::two_tet_mesh();
+  m.nodes[1].x() = std::numeric_limits<double>::infinity();
+  m.nodes[2].y() = std::nan("");
+  const auto v = validate(m);
+  const auto bad = of_kind(v, ViolationKind::NonFiniteNode);
+  ASSERT_EQ(bad.size(), 2u) << describe(v);
+  EXPECT_EQ(bad[0].ids, Ids{2});
+  EXPECT_EQ(bad[1].ids, Ids{3});
+  EXPECT_NE(bad[0].message.find("node 2 has a non-finite coordinate (inf"), std::string::npos) << bad[0].message;
+  EXPECT_TRUE(of_kind(v, ViolationKind::InvertedTet).empty()) << describe(v);
+  EXPECT_TRUE(of_kind(v, ViolationKind::ZeroVolumeTet).empty()) << describe(v);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ from . import icon_path
 from .colouring import SCALES
 
 # Kinds of violation whose ids are node ids; the others carry element ids.
-_NODE_KINDS = ("open_boundary", "duplicate_node", "unused_node")
+_NODE_KINDS = ("open_boundary", "duplicate_node", "unused_node", "non_finite_node")
 
 _TABLE_ROWS = (  # (measure, row label, tooltip, format)
     ("dihedral_min", "dihedral min (\u00b0)", "Smallest dihedral angle of each element, in degrees; "
