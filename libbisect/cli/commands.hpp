@@ -2,6 +2,7 @@
 // lets bisect::InputError / MeshingError propagate to main, which prints them as one line.
 #pragma once
 #include <iosfwd>
+#include <cstdint>
 #include <string>
 
 namespace bisect::cli {
@@ -18,5 +19,19 @@ int run_info(const std::string& input, const CommonOptions& opt, std::ostream& o
 // `bisect-mesh quality MESH`: read a .vtu/.msh/.inp tetrahedral mesh, print the validity check
 // and the quality summary. Exit 0 when the mesh is valid, 2 when it violates an invariant.
 int run_quality(const std::string& mesh, const CommonOptions& opt, std::ostream& out, std::ostream& err);
+
+}  // namespace bisect::cli
+
+namespace bisect::cli {
+
+// The main job: `bisect-mesh INPUT -o OUTPUT [options]`.
+struct MeshOptions {
+  std::string output;      // -o
+  std::string stats;       // --stats FILE (JSON)
+  bool cells_only = false; // --cells-only: stop after the convex decomposition, write .poly cells
+  std::int64_t elements = 0;  // -n (0: the input's R)
+  bool quiet = false;
+};
+int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err);
 
 }  // namespace bisect::cli

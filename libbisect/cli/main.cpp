@@ -13,7 +13,16 @@
 namespace {
 
 const char* kUsage =
-    "usage: bisect-mesh COMMAND [OPTIONS] FILE\n"
+    "usage: bisect-mesh INPUT -o OUTPUT [OPTIONS]\n"
+    "       bisect-mesh COMMAND [OPTIONS] FILE\n"
+    "\n"
+    "main job:\n"
+    "  INPUT           .poly (thesis 6.13), .stl or .off polyhedral input\n"
+    "  -o OUTPUT       where the result goes\n"
+    "  --cells-only    stop after the convex decomposition and write the convex cells as a\n"
+    "                  .poly file, one region per cell, cells sharing their faces\n"
+    "  --stats FILE    write statistics as JSON: convex_cells, bisections by method,\n"
+    "                  rejected_planes by reason, deferred_edges, times (init_geom, bisect)\n"
     "\n"
     "commands:\n"
     "  info INPUT      read and check a polyhedral input (.poly, .stl, .off) or a 2D input\n"
@@ -39,8 +48,15 @@ int usage_error(const std::string& what) {
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   bisect::cli::CommonOptions opt;
+  bisect::cli::MeshOptions mesh;
   std::vector<std::string> positional;
-  for (const std::string& a : args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string* dst) {
+      if (i + 1 >= args.size()) return false;
+      *dst = args[++i];
+      return true;
+    };
     if (a == "-h" || a == "--help") {
       std::cout << kUsage;
       return 0;
@@ -50,19 +66,29 @@ int main(int argc, char** argv) {
     } else if (a == "--json") {
       opt.json = true;
     } else if (a == "--quiet" || a == "-q") {
-      opt.quiet = true;
+      opt.quiet = mesh.quiet = true;
+    } else if (a == "--cells-only") {
+      mesh.cells_only = true;
+    } else if (a == "-o" || a == "--output") {
+      if (!value(&mesh.output)) return usage_error(a + " needs a file name");
+    } else if (a == "--stats") {
+      if (!value(&mesh.stats)) return usage_error(a + " needs a file name");
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {
       positional.push_back(a);
     }
   }
-  if (positional.empty()) return usage_error("no command given");
+  if (positional.empty()) return usage_error("no command or input given");
   const std::string& cmd = positional[0];
-  if (cmd != "info" && cmd != "quality")
-    return usage_error("unknown command '" + cmd + "'; the commands are info and quality");
-  if (positional.size() != 2) return usage_error(cmd + " takes exactly one file");
+  const bool command = cmd == "info" || cmd == "quality";
+  if (!command) {
+    if (positional.size() != 1) return usage_error("one input file at a time ('" + positional[1] + "' is extra)");
+  } else if (positional.size() != 2) {
+    return usage_error(cmd + " takes exactly one file");
+  }
   try {
+    if (!command) return bisect::cli::run_mesh(cmd, mesh, std::cout, std::cerr);
     if (cmd == "info") return bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
     return bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
   } catch (const bisect::InputError& e) {

@@ -152,3 +152,36 @@ TEST(Cli, QualityOfAnInvalidMeshNamesTheElement) {
   EXPECT_NE(r.err.find("7"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("invert"), std::string::npos) << r.err;
 }
+
+TEST(Cli, CellsOnlyWritesConvexCellsAndStats) {
+  const fs::path cells = scratch_dir() / "cells.poly", stats = scratch_dir() / "stats.json";
+  const CliResult r = run("'" + std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly' --cells-only -o '" +
+                          cells.string() + "' --stats '" + stats.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("convex cells"), std::string::npos) << r.out;
+  // the cells read back as a valid .poly with the input's volume (1 - 1/8 + 1)
+  const CliResult info = run("info '" + cells.string() + "' --json");
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("\"volume\":1.875}"), std::string::npos) << info.out;
+  const std::string s = slurp(stats);
+  for (const char* key : {"\"convex_cells\"", "\"bisections\"", "\"rejected_planes\"", "\"init_geom\"", "\"bisect\""})
+    EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
+}
+
+TEST(Cli, MainJobErrorsExitTwo) {
+  const std::string in = "'" + std::string(BISECT_TEST_DATA) + "/reentry-box.poly'";
+  CliResult r = run(in + " --cells-only");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no output file"), std::string::npos) << r.err;
+  r = run(in + " -o '" + (scratch_dir() / "out.vtu").string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("not available"), std::string::npos) << r.err;
+  r = run(in + " --cells-only -o");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("-o needs a file name"), std::string::npos) << r.err;
+  // an open surface: the reader names the open edge
+  const fs::path open = write_file("open.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n");
+  r = run("'" + open.string() + "' --cells-only -o '" + (scratch_dir() / "c.poly").string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}

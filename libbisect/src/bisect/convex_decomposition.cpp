@@ -1,0 +1,218 @@
+// Cavity removal (thesis 6.5) and convex decomposition (6.7).
+//
+// A region with inner shells (cavities, sub-domains) is first split by the planes of its inner
+// shells' faces (polyhedral splitting, 7.3.2), which joins the inner surface to the outer one.
+// Then reflex edges are taken in descending angle order, edges on double-occurring faces last;
+// each is tried with the candidate planes of its inner wedge (6.4.1), the cut face method first
+// and whole-plane splitting second. An edge no plane resolves is deferred: the regions cut from
+// its region try it after their other edges.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include "bisect/edge_wedges.hpp"
+#include "bisect/errors.hpp"
+#include "bisect/plane_cut.hpp"
+#include "bisect/plane_selection.hpp"
+
+namespace bisect {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::vector<ReflexEdge> reflex_edges(const PolyhedralModel& m, Index r, double tol) {
+  std::vector<ReflexEdge> out;
+  for (const auto& [key, uses] : region_edges(m, r))
+    for (const Wedge& w : interior_wedges(m, r, key_lo(key), key_hi(key), uses))
+      if (w.angle > M_PI + tol)
+        out.push_back({key_lo(key), key_hi(key), w, m.side_of(w.face0, r) == 2 || m.side_of(w.face1, r) == 2});
+  std::sort(out.begin(), out.end(), [](const ReflexEdge& x, const ReflexEdge& y) {
+    if (x.on_double_face != y.on_double_face) return !x.on_double_face;
+    if (x.wedge.angle != y.wedge.angle) return x.wedge.angle > y.wedge.angle;
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  return out;
+}
+
+// Connected surfaces bounding the region, by faces sharing edges; returns each face's shell.
+std::vector<int> shells(const PolyhedralModel& m, Index r, const std::vector<Index>& faces, int* count) {
+  std::unordered_map<Index, int> slot;
+  for (std::size_t k = 0; k < faces.size(); ++k) slot[faces[k]] = static_cast<int>(k);
+  std::vector<int> parent(faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k) parent[k] = static_cast<int>(k);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& [key, uses] : region_edges(m, r))
+    for (std::size_t i = 1; i < uses.size(); ++i) parent[find(slot[uses[i].face])] = find(slot[uses[0].face]);
+  std::unordered_map<int, int> id;
+  std::vector<int> shell(faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const int root = find(static_cast<int>(k));
+    auto it = id.find(root);
+    if (it == id.end()) it = id.emplace(root, static_cast<int>(id.size())).first;
+    shell[k] = it->second;
+  }
+  *count = static_cast<int>(id.size());
+  return shell;
+}
+
+std::string node_name(const PolyhedralModel& m, Index v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "node " << v + 1 << " (" << m.nodes[v].x() << ", " << m.nodes[v].y() << ", " << m.nodes[v].z() << ")";
+  return s.str();
+}
+
+constexpr int kRelaxLevels = 3;
+
+DecomposeOptions relaxed(const DecomposeOptions& opt, int level) {
+  DecomposeOptions o = opt;
+  if (level >= 1) o.near_vertex_rel /= 4, o.short_edge_rel /= 4, o.min_angle_deg /= 2;
+  if (level >= 2) o.near_vertex_rel = 1e-6, o.short_edge_rel = 1e-6, o.min_angle_deg = 0.2;
+  return o;
+}
+
+}  // namespace
+
+Decomposition decompose(const PolyInput& in, const DecomposeOptions& opt) {
+  const auto t0 = Clock::now();
+  PolyhedralModel m = prepare_model(in);
+  const double prep = since(t0);
+  Decomposition d = decompose(std::move(m), opt);
+  d.stats.prepare_seconds = prep;
+  return d;
+}
+
+Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
+  const auto t0 = Clock::now();
+  Decomposition d;
+  d.model = std::move(model);
+  PolyhedralModel& m = d.model;
+  DecomposeStats& st = d.stats;
+  const double tol = opt.reflex_tol_deg * M_PI / 180.0;
+
+  std::deque<Index> work;
+  for (std::size_t r = 0; r < m.regions.size(); ++r) work.push_back(static_cast<Index>(r));
+  std::unordered_map<Index, std::set<std::uint64_t>> deferred;  // edges that failed in the region
+  std::size_t finished = 0;
+  auto accept = [&](const CutOutcome& c, Index r, const char* method) {
+    ++st.bisections[method];
+    const std::set<std::uint64_t> failed = deferred[r];
+    for (Index nr : c.regions) {
+      deferred[nr] = failed;
+      work.push_back(nr);
+    }
+  };
+
+  while (!work.empty()) {
+    const Index r = work.front();
+    work.pop_front();
+    if (opt.progress && !opt.progress(static_cast<double>(finished) / static_cast<double>(finished + work.size() + 1)))
+      throw Cancelled();
+    m.drop_dead_faces(r);
+
+    // Cavity removal: planes of inner-shell faces, largest faces first.
+    int nshell = 0;
+    const std::vector<Index> faces = m.live_faces(r);
+    const std::vector<int> shell = shells(m, r, faces, &nshell);
+    if (nshell > 1) {
+      std::vector<double> lo(nshell, 1e300);
+      for (std::size_t k = 0; k < faces.size(); ++k)
+        for (Index v : m.faces[faces[k]].loops[0]) lo[shell[k]] = std::min(lo[shell[k]], m.nodes[v].x());
+      const int outer = static_cast<int>(std::min_element(lo.begin(), lo.end()) - lo.begin());
+      std::vector<Index> inner;
+      for (std::size_t k = 0; k < faces.size(); ++k)
+        if (shell[k] != outer) inner.push_back(faces[k]);
+      std::sort(inner.begin(), inner.end(), [&](Index a, Index b) { return m.face_area(a) > m.face_area(b); });
+      bool done = false;
+      std::vector<CutPlane> tried;
+      for (Index f : inner) {
+        const CutPlane pl{m.faces[f].normal, m.faces[f].offset};
+        bool seen = false;
+        for (const CutPlane& t : tried) seen |= std::abs(t.n.dot(pl.n)) > 1 - 1e-12 && std::abs(t.c - pl.c * t.n.dot(pl.n)) < 1e-9 * m.size;
+        if (seen) continue;
+        tried.push_back(pl);
+        const CutOutcome c = cut_region(m, r, pl, -1, -1, true, opt);
+        if (c.ok) {
+          accept(c, r, "splitting");
+          done = true;
+          break;
+        }
+        ++st.rejected[c.reason];
+      }
+      if (done) continue;
+    }
+
+    const std::vector<ReflexEdge> reflex = reflex_edges(m, r, tol);
+    if (reflex.empty()) {
+      ++finished;
+      continue;
+    }
+    std::vector<ReflexEdge> order;
+    for (const ReflexEdge& e : reflex)
+      if (!deferred[r].count(edge_key(e.a, e.b))) order.push_back(e);
+    for (const ReflexEdge& e : reflex)
+      if (deferred[r].count(edge_key(e.a, e.b))) order.push_back(e);
+    bool done = false;
+    std::map<std::string, std::size_t> why;  // this region's rejections, for the error message
+    // Every reflex edge with the thesis's rejection limits first; only when none of the region's
+    // edges can be resolved so, the limits are relaxed step by step (a short edge or a small angle
+    // in one cell is better than no mesh), and each relaxed cut is counted.
+    for (int level = 0; level < kRelaxLevels && !done; ++level) {
+      const DecomposeOptions lim = relaxed(opt, level);
+      for (const ReflexEdge& e : order) {
+        const std::vector<CutPlane> planes = candidate_planes(m, e, opt.max_candidates);
+        for (int whole = 0; whole < 2 && !done; ++whole)
+          for (const CutPlane& pl : planes) {
+            const CutOutcome c = cut_region(m, r, pl, e.a, e.b, whole == 1, lim);
+            if (c.ok) {
+              accept(c, r, whole ? "splitting" : "cut_face");
+              if (level > 0) ++st.bisections["relaxed_limits"];
+              done = true;
+              break;
+            }
+            if (level == 0) ++st.rejected[c.reason];
+            ++why[c.reason];
+          }
+        if (done) break;
+        if (level == 0 && deferred[r].insert(edge_key(e.a, e.b)).second) ++st.deferred;
+      }
+    }
+    if (!done) {
+      const ReflexEdge& e = order.front();
+      std::ostringstream msg;
+      msg.precision(4);
+      msg << m.source << ": region " << m.regions[r].source + 1 << ": no bisection plane resolves the reflex edge from "
+          << node_name(m, e.a) << " to " << node_name(m, e.b) << " (angle " << e.wedge.angle * 180 / M_PI
+          << " degrees) nor any of the region's other " << order.size() - 1 << " reflex edges; planes rejected:";
+      for (const auto& [reason, n] : why) msg << ' ' << reason << ' ' << n;
+      throw MeshingError(msg.str());
+    }
+  }
+
+  for (std::size_t r = 0; r < m.regions.size(); ++r) {
+    m.drop_dead_faces(static_cast<Index>(r));
+    ConvexCell c;
+    c.source_region = m.regions[r].source;
+    for (Index f : m.regions[r].faces) {
+      if (m.side_of(f, static_cast<Index>(r)) == 2)
+        throw MeshingError(m.source + ": a cut face remained inside a cell of region " + std::to_string(c.source_region + 1));
+      c.faces.push_back(f);
+      c.outward.push_back(m.faces[f].back == static_cast<Index>(r) ? 1 : 0);
+    }
+    d.cells.push_back(std::move(c));
+  }
+  st.convex_cells = d.cells.size();
+  st.bisect_seconds = since(t0);
+  return d;
+}
+
+}  // namespace bisect
