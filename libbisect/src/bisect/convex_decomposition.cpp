@@ -15,6 +15,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "bisect/edge_following.hpp"
 #include "bisect/edge_wedges.hpp"
 #include "bisect/errors.hpp"
 #include "bisect/plane_cut.hpp"
@@ -72,6 +73,20 @@ std::string node_name(const PolyhedralModel& m, Index v) {
 }
 
 constexpr int kRelaxLevels = 3;
+
+// In the thesis's order for a reflex edge (6.4.1, 6.7): the cut face, then edge following; for a
+// section with holes (a sub-region in the way, 6.5), plane splitting, then contour splitting.
+const char* const kMethodNames[4] = {"cut_face", "edge_following", "splitting", "contour_splitting"};
+
+CutOutcome try_method(PolyhedralModel& m, Index r, const CutPlane& pl, Index a, Index b, int method,
+                      const DecomposeOptions& opt) {
+  switch (method) {
+    case 0: return cut_region(m, r, pl, a, b, false, opt);
+    case 1: return edge_following_cut(m, r, pl, a, b, false, opt);
+    case 2: return cut_region(m, r, pl, a, b, true, opt);
+    default: return edge_following_cut(m, r, pl, a, b, true, opt);
+  }
+}
 
 DecomposeOptions relaxed(const DecomposeOptions& opt, int level) {
   DecomposeOptions o = opt;
@@ -140,13 +155,16 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
         for (const CutPlane& t : tried) seen |= std::abs(t.n.dot(pl.n)) > 1 - 1e-12 && std::abs(t.c - pl.c * t.n.dot(pl.n)) < 1e-9 * m.size;
         if (seen) continue;
         tried.push_back(pl);
-        const CutOutcome c = cut_region(m, r, pl, -1, -1, true, opt);
-        if (c.ok) {
-          accept(c, r, "splitting");
-          done = true;
-          break;
+        for (int method : {2, 3}) {
+          const CutOutcome c = try_method(m, r, pl, -1, -1, method, opt);
+          if (c.ok) {
+            accept(c, r, kMethodNames[method]);
+            done = true;
+            break;
+          }
+          ++st.rejected[c.reason];
         }
-        ++st.rejected[c.reason];
+        if (done) break;
       }
       if (done) continue;
     }
@@ -170,11 +188,11 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
       const DecomposeOptions lim = relaxed(opt, level);
       for (const ReflexEdge& e : order) {
         const std::vector<CutPlane> planes = candidate_planes(m, e, opt.max_candidates);
-        for (int whole = 0; whole < 2 && !done; ++whole)
+        for (int method = 0; method < 4 && !done; ++method)
           for (const CutPlane& pl : planes) {
-            const CutOutcome c = cut_region(m, r, pl, e.a, e.b, whole == 1, lim);
+            const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim);
             if (c.ok) {
-              accept(c, r, whole ? "splitting" : "cut_face");
+              accept(c, r, kMethodNames[method]);
               if (level > 0) ++st.bisections["relaxed_limits"];
               done = true;
               break;

@@ -1,0 +1,85 @@
+// The section of a region by a plane, worked out without touching the model (the first steps of
+// thesis 7.3.1 and 7.3.2, shared by the cut face, splitting, edge following and contour
+// splitting methods): each node's side and distance, where the plane crosses faces (chords) and
+// where it runs along edges into the region, all directed so that the section lies on their left
+// seen from the plane's positive side, closed into loops and grouped into polygons (outer loop,
+// counter-clockwise by the A3 angle sum, and its holes).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "bisect/edge_wedges.hpp"
+#include "bisect/plane_cut.hpp"
+
+namespace bisect {
+
+struct NodeInfo {
+  double d = 0;        // signed distance to the plane
+  int side = 0;        // -1, 0 (on), +1
+  double min_len = 1e300;  // shortest edge at the node
+};
+
+struct SectionPoint {
+  Index vertex = -1;   // a node on the plane, or
+  Index ea = -1, eb = -1;  // the edge the plane crosses (ea < eb)
+  Vec3 p;
+  Vec2 q;              // in the plane's frame
+};
+
+struct Piece {
+  int from, to;
+  Index face;          // the face it crosses (a chord), or -1 along an existing edge
+  const char* flaw;    // why this piece is unacceptable, or nullptr
+};
+
+class Section {
+ public:
+  Section(const PolyhedralModel& m, const CutPlane& pl) : m_(m), frame_(pl.n, pl.n * pl.c) {}
+  std::vector<SectionPoint> pts;
+  std::vector<Piece> pieces;
+
+  int vertex_point(Index v) { return point(edge_key(v, v), [&] { return SectionPoint{v, -1, -1, m_.nodes[v], {}}; }); }
+  int edge_point(Index a, Index b, double da, double db) {
+    if (a > b) std::swap(a, b), std::swap(da, db);
+    return point(edge_key(a, b), [&] {
+      const double t = da / (da - db);
+      return SectionPoint{-1, a, b, m_.nodes[a] + t * (m_.nodes[b] - m_.nodes[a]), {}};
+    });
+  }
+  const PlaneFrame& frame() const { return frame_; }
+
+ private:
+  template <class Make>
+  int point(std::uint64_t key, Make make) {
+    auto it = index_.find(key);
+    if (it != index_.end()) return it->second;
+    SectionPoint sp = make();
+    sp.q = frame_.to2d(sp.p);
+    pts.push_back(sp);
+    return index_[key] = static_cast<int>(pts.size() - 1);
+  }
+  const PolyhedralModel& m_;
+  PlaneFrame frame_;
+  std::unordered_map<std::uint64_t, int> index_;
+};
+
+struct SectionResult {
+  const char* reject = nullptr;       // why no section could be built
+  std::unordered_map<Index, NodeInfo> info;
+  std::vector<Index> near;            // nodes off the plane but too near it
+  Section sec;
+  std::vector<std::vector<int>> loops;   // piece ids
+  std::vector<std::vector<Vec2>> loop2d;
+  std::vector<int> loop_of;           // per piece
+  std::vector<int> poly_of;           // per loop
+  std::vector<std::vector<int>> polys;   // loop ids, outer first
+  SectionResult(const PolyhedralModel& m, const CutPlane& pl) : sec(m, pl) {}
+};
+
+// Builds the section of region r. With whole_plane, a node too near the plane rejects at once.
+SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& pl, bool whole_plane,
+                            const DecomposeOptions& opt);
+
+}  // namespace bisect
