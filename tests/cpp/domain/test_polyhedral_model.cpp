@@ -48,7 +48,9 @@ TEST(PolyhedralModel, VertexGoesIntoEveryFaceOfTheEdge) {
     const auto& l = f.loops[0];
     const bool has = std::find(l.begin(), l.end(), v) != l.end();
     with += has;
-    if (has) EXPECT_EQ(l.size(), 5u);
+    if (has) {
+      EXPECT_EQ(l.size(), 5u);
+    }
   }
   EXPECT_EQ(with, 2);
   EXPECT_EQ(m.faces_of_node(v).size(), 2u);
@@ -91,8 +93,11 @@ TEST(FaceSplit, UntouchedHoleGoesToThePieceAroundIt) {
   std::size_t holes = 0;
   for (const auto& piece : pieces) holes += piece.size() - 1;
   EXPECT_EQ(holes, 1u);
-  for (const auto& piece : pieces)
-    if (piece.size() == 2) EXPECT_LT(pos(piece[0][0]).y() + pos(piece[0][1]).y() + pos(piece[0][2]).y(), 6.5);
+  for (const auto& piece : pieces) {
+    if (piece.size() == 2) {  // the hole sits in the lower piece
+      EXPECT_LT(pos(piece[0][0]).y() + pos(piece[0][1]).y() + pos(piece[0][2]).y(), 6.5);
+    }
+  }
 }
 
 TEST(FaceSplit, TurningAngleSumTellsOuterFromInner) {
