@@ -44,7 +44,10 @@ std::vector<FileFace> gather(const PolyInput& in, std::vector<Index>* face_of) {
   }
   for (std::size_t f = 0; f < in.faces.size(); ++f)
     if (in.faces[f].hole_of >= 0) {
-      (*face_of)[f] = (*face_of)[in.faces[f].hole_of];
+      Index parent = in.faces[f].hole_of;  // a hole of a hole still belongs to the outer face
+      for (int guard = 0; in.faces[parent].hole_of >= 0 && guard < 100; ++guard) parent = in.faces[parent].hole_of;
+      if (in.faces[parent].hole_of >= 0) continue;
+      (*face_of)[f] = (*face_of)[parent];
       out[(*face_of)[f]].loops.push_back(in.faces[f].nodes);
     }
   for (FileFace& ff : out) {

@@ -72,10 +72,17 @@ std::string node_name(const PolyhedralModel& m, Index v) {
   return s.str();
 }
 
-constexpr int kRelaxLevels = 3;
+// The order in which a region's reflex edges are tried: planar cuts before walked ones (whose
+// triangulated interfaces can leave new reflex edges behind), each first under the thesis's
+// limits, then under relaxed ones; only the last stage gives up on the limits almost entirely.
+struct Stage {
+  int level;
+  int methods[2];
+};
+constexpr Stage kStages[] = {{0, {0, 2}}, {0, {1, 3}}, {1, {0, 2}}, {1, {1, 3}}, {2, {0, 2}}};
 
-// In the thesis's order for a reflex edge (6.4.1, 6.7): the cut face, then edge following; for a
-// section with holes (a sub-region in the way, 6.5), plane splitting, then contour splitting.
+// The four methods: the cut face and edge following resolve a reflex edge (6.4.1, 6.7); plane
+// splitting and contour splitting handle sections with holes (a sub-region in the way, 6.5).
 const char* const kMethodNames[4] = {"cut_face", "edge_following", "splitting", "contour_splitting"};
 
 CutOutcome try_method(PolyhedralModel& m, Index r, const CutPlane& pl, Index a, Index b, int method,
@@ -93,6 +100,38 @@ DecomposeOptions relaxed(const DecomposeOptions& opt, int level) {
   if (level >= 1) o.near_vertex_rel /= 4, o.short_edge_rel /= 4, o.min_angle_deg /= 2;
   if (level >= 2) o.near_vertex_rel = 1e-6, o.short_edge_rel = 1e-6, o.min_angle_deg = 0.2;
   return o;
+}
+
+// A convex cell may keep a face with a hole that a coplanar face of the same cell fills (a slab
+// over a cavity's top). The thesis removes such holes by cut edges (7.3.2 step 6); here the cell
+// is split by a plane across the face through the hole, which keeps both halves convex and leaves
+// only simple polygons, so that the .poly file (which tells a hole only by its lying inside a
+// coplanar face) reads back the same.
+void remove_face_holes(PolyhedralModel& m, const DecomposeOptions& opt, DecomposeStats& st) {
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (!m.faces[f].alive || m.faces[f].loops.size() < 2) continue;
+    const ModelFace face = m.faces[f];
+    const Index r = face.back >= 0 ? face.back : face.front;
+    Vec3 centre = Vec3::Zero();
+    for (Index v : face.loops[1]) centre += m.nodes[v];
+    centre /= static_cast<double>(face.loops[1].size());
+    const PlaneFrame fr(face.normal);
+    bool done = false;
+    for (int level = 0; level < 3 && !done; ++level)
+      for (int k = 0; k < 12 && !done; ++k) {  // directions across the face, 15 degrees apart
+        const double a = M_PI * k / 12;
+        const Vec3 n = (std::cos(a) * fr.e1 + std::sin(a) * fr.e2).normalized();
+        const CutOutcome c = cut_region(m, r, {n, n.dot(centre)}, -1, -1, true, relaxed(opt, level));
+        if (c.ok) {
+          ++st.bisections["hole_removal"];
+          done = true;
+        }
+      }
+    if (!done)
+      throw MeshingError(m.source + ": no plane across a cell face with a hole (near " + std::to_string(centre.x()) + ", " +
+                         std::to_string(centre.y()) + ", " + std::to_string(centre.z()) + ") divides it into simple polygons");
+    f = static_cast<std::size_t>(-1);  // faces were split and added: look again from the start
+  }
 }
 
 }  // namespace
@@ -184,11 +223,14 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
     // Every reflex edge with the thesis's rejection limits first; only when none of the region's
     // edges can be resolved so, the limits are relaxed step by step (a short edge or a small angle
     // in one cell is better than no mesh), and each relaxed cut is counted.
-    for (int level = 0; level < kRelaxLevels && !done; ++level) {
+    for (const Stage& stage : kStages) {
+      if (done) break;
+      const int level = stage.level;
       const DecomposeOptions lim = relaxed(opt, level);
       for (const ReflexEdge& e : order) {
         const std::vector<CutPlane> planes = candidate_planes(m, e, opt.max_candidates);
-        for (int method = 0; method < 4 && !done; ++method)
+        for (int method : {stage.methods[0], stage.methods[1]}) {
+          if (done) break;
           for (const CutPlane& pl : planes) {
             const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim);
             if (c.ok) {
@@ -200,6 +242,7 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
             if (level == 0) ++st.rejected[c.reason];
             ++why[c.reason];
           }
+        }
         if (done) break;
         if (level == 0 && deferred[r].insert(edge_key(e.a, e.b)).second) ++st.deferred;
       }
@@ -216,6 +259,7 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
     }
   }
 
+  remove_face_holes(m, opt, st);
   for (std::size_t r = 0; r < m.regions.size(); ++r) {
     m.drop_dead_faces(static_cast<Index>(r));
     ConvexCell c;

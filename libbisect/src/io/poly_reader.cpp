@@ -141,9 +141,13 @@ void find_face_holes(PolyInput& in) {
         const Vec3 slack = Vec3::Constant(pi.tol);
         if ((hi.lo.array() < (pi.lo - slack).array()).any() || (hi.hi.array() > (pi.hi + slack).array()).any())
           continue;
+        // A hole lies inside and shares no node with the face: a coplanar neighbour that shares
+        // an edge with it (two pieces of one side of a convex cell, say) is no hole.
         bool inside = true;
-        for (Index n : in.faces[h].nodes)
+        for (Index n : in.faces[h].nodes) {
           if (std::abs(pi.unit.dot(in.nodes[n] - pi.centroid)) > pi.tol) inside = false;
+          if (std::find(in.faces[p].nodes.begin(), in.faces[p].nodes.end(), n) != in.faces[p].nodes.end()) inside = false;
+        }
         if (!inside) continue;
         std::vector<Vec2> polygon;
         for (Index n : in.faces[p].nodes) polygon.push_back(io::project(in.nodes[n], pi.axis));
