@@ -15,10 +15,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/face_split.hpp"
-#if __has_include("domain/self_intersection.hpp")
-#include "domain/self_intersection.hpp"
-#define BISECT_HAVE_SELF_INTERSECTION 1
-#endif
+#include "domain/surface_intersections.hpp"
 
 namespace bisect {
 namespace {
@@ -115,6 +112,7 @@ std::string face_name(const PolyInput& in, Index input_face) {
 }  // namespace
 
 PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
+  reject_surface_intersections(in);  // first: orientation and containment assume no crossing
   PolyhedralModel m;
   m.source = in.source;
   for (const Vec3& p : in.nodes) m.add_node(p);
@@ -294,9 +292,6 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
   for (std::size_t r = 0; r < nr; ++r)
     if (!in.regions[r].cavity && sum.regions[r].shells > 1) rep.inner_shells_as_cavities += sum.regions[r].shells - 1;
 
-#ifdef BISECT_HAVE_SELF_INTERSECTION
-  throw_if_self_intersecting(in);
-#endif
   if (report) *report = rep;
   return m;
 }

@@ -72,7 +72,7 @@ TEST(PlaneCut, SplittingInsertsEveryPolygon) {
 
 TEST(PlaneCut, RejectsAPlaneNearAVertex) {
   std::vector<Vec2> l = kL;
-  l.insert(l.begin() + 5, Vec2(0, 1.02));  // on the left wall, 0.02 above the plane y = 1
+  l.push_back(Vec2(0, 1.02));  // on the left wall, 0.02 above the plane y = 1
   PolyhedralModel m = model(prism(l));
   const std::size_t before = m.faces.size();
   const CutOutcome c = cut_region(m, 0, {Vec3(0, 1, 0), 1.0}, 3, 3 + 7, false, DecomposeOptions{});

@@ -185,3 +185,44 @@ TEST(Cli, MainJobErrorsExitTwo) {
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
 }
+
+TEST(Cli, CellsOnlyRejectsACavityCrossingItsOuterBoundary) {
+  // a unit cube with a cavity box that pokes out through the top face
+  const fs::path in = write_file("crossing-cavity.poly", R"(12 16 2 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+0.25 0.25 0.5
+0.75 0.25 0.5
+0.75 0.75 0.5
+0.25 0.75 0.5
+0.25 0.25 1.5
+0.75 0.25 1.5
+0.75 0.75 1.5
+0.25 0.75 1.5
+4 1 2 3 4
+4 5 6 7 8
+4 1 2 6 5
+4 2 3 7 6
+4 3 4 8 7
+4 4 1 5 8
+4 9 10 11 12
+4 13 14 15 16
+4 9 10 14 13
+4 10 11 15 14
+4 11 12 16 15
+4 12 9 13 16
+6 1 2 3 4 5 6
+-6 7 8 9 10 11 12
+)");
+  const CliResult r = run("'" + in.string() + "' --cells-only -o '" + (scratch_dir() / "c.poly").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("faces 2 and "), std::string::npos) << r.err;  // the cube's top face
+  EXPECT_NE(r.err.find("intersect at"), std::string::npos) << r.err;
+}
