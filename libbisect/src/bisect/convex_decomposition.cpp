@@ -27,9 +27,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::vector<ReflexEdge> reflex_edges(const PolyhedralModel& m, Index r, double tol) {
+std::vector<ReflexEdge> reflex_edges(const PolyhedralModel& m, Index r, const RegionEdges& edges, double tol) {
   std::vector<ReflexEdge> out;
-  for (const auto& [key, uses] : region_edges(m, r))
+  for (const auto& [key, uses] : edges)
     for (const Wedge& w : interior_wedges(m, r, key_lo(key), key_hi(key), uses))
       if (w.angle > M_PI + tol)
         out.push_back({key_lo(key), key_hi(key), w, m.side_of(w.face0, r) == 2 || m.side_of(w.face1, r) == 2});
@@ -86,12 +86,12 @@ constexpr Stage kStages[] = {{0, {0, 2}}, {0, {1, 3}}, {1, {0, 2}}, {1, {1, 3}},
 const char* const kMethodNames[4] = {"cut_face", "edge_following", "splitting", "contour_splitting"};
 
 CutOutcome try_method(PolyhedralModel& m, Index r, const CutPlane& pl, Index a, Index b, int method,
-                      const DecomposeOptions& opt) {
+                      const DecomposeOptions& opt, const RegionEdges* edges = nullptr) {
   switch (method) {
-    case 0: return cut_region(m, r, pl, a, b, false, opt);
-    case 1: return edge_following_cut(m, r, pl, a, b, false, opt);
-    case 2: return cut_region(m, r, pl, a, b, true, opt);
-    default: return edge_following_cut(m, r, pl, a, b, true, opt);
+    case 0: return cut_region(m, r, pl, a, b, false, opt, edges);
+    case 1: return edge_following_cut(m, r, pl, a, b, false, opt, edges);
+    case 2: return cut_region(m, r, pl, a, b, true, opt, edges);
+    default: return edge_following_cut(m, r, pl, a, b, true, opt, edges);
   }
 }
 
@@ -208,7 +208,8 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
       if (done) continue;
     }
 
-    const std::vector<ReflexEdge> reflex = reflex_edges(m, r, tol);
+    const RegionEdges edges = region_edges(m, r);  // unchanged until a cut succeeds
+    const std::vector<ReflexEdge> reflex = reflex_edges(m, r, edges, tol);
     if (reflex.empty()) {
       ++finished;
       continue;
@@ -232,7 +233,7 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
         for (int method : {stage.methods[0], stage.methods[1]}) {
           if (done) break;
           for (const CutPlane& pl : planes) {
-            const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim);
+            const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim, &edges);
             if (c.ok) {
               accept(c, r, kMethodNames[method]);
               if (level > 0) ++st.bisections["relaxed_limits"];

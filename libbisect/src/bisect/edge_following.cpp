@@ -14,7 +14,7 @@
 namespace bisect {
 
 CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea, Index eb, bool contour,
-                              const DecomposeOptions& opt) {
+                              const DecomposeOptions& opt, const RegionEdges* given_edges) {
   CutOutcome out;
   auto reject = [&](const char* why) {
     out.reason = why;
@@ -22,7 +22,10 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
   };
   const double min_angle = opt.min_angle_deg * M_PI / 180.0;
   const double max_tilt = 45.0 * M_PI / 180.0;
-  SectionResult S = build_section(m, r, pl, false, opt);
+  RegionEdges own_edges;
+  if (!given_edges) own_edges = region_edges(m, r);
+  const RegionEdges& edges = given_edges ? *given_edges : own_edges;
+  SectionResult S = build_section(m, r, pl, false, opt, &edges);
   if (S.reject) return reject(S.reject);
   const Section& sec = S.sec;
 
@@ -40,7 +43,6 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
   }
 
   // 1. Walk: each section point becomes a node of the region, or a provisional mid-node -(k+2).
-  const RegionEdges edges = region_edges(m, r);
   std::vector<Vec3> mid_pos;              // provisional mid-nodes
   std::vector<std::array<Index, 2>> mid_edge;
   auto pos = [&](Index v) { return v >= 0 ? m.nodes[v] : mid_pos[-v - 2]; };

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bisect/edge_wedges.hpp"
 #include "bisect/polyhedral_model.hpp"
 
 namespace bisect {
@@ -29,7 +30,8 @@ struct CutOutcome {
 
 // Cuts region r. With whole_plane false only the section polygon bounded by edge (ea, eb) is
 // inserted (cut face); otherwise every section polygon is (splitting).
+// `edges`: the region's edge table, when the caller keeps one (see build_section).
 CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& plane, Index ea, Index eb, bool whole_plane,
-                      const DecomposeOptions& opt);
+                      const DecomposeOptions& opt, const RegionEdges* edges = nullptr);
 
 }  // namespace bisect

@@ -32,7 +32,7 @@ int next_piece(const Section& s, const std::vector<std::vector<int>>& outs, int 
 }  // namespace
 
 SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& pl, bool whole_plane,
-                            const DecomposeOptions& opt) {
+                            const DecomposeOptions& opt, const RegionEdges* given_edges) {
   SectionResult res(m, pl);
   auto fail = [&](const char* why) {
     res.reject = why;
@@ -115,7 +115,9 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
   }
 
   // 3. Existing edges on the plane where the plane runs into the region.
-  const RegionEdges edges = region_edges(m, r);
+  RegionEdges own_edges;
+  if (!given_edges) own_edges = region_edges(m, r);
+  const RegionEdges& edges = given_edges ? *given_edges : own_edges;
   for (const auto& [key, uses] : edges) {
     const Index a = key_lo(key), b = key_hi(key);
     if (info[a].side != 0 || info[b].side != 0) continue;

@@ -65,9 +65,32 @@ class Section {
   std::unordered_map<std::uint64_t, int> index_;
 };
 
+// Per-node data of one section, for the region's nodes only, looked up by node id. (A hash
+// map here was the largest cost of a decomposition: every candidate plane builds one.)
+class NodeTable {
+ public:
+  explicit NodeTable(std::size_t nodes) : slot_(nodes, -1) {}
+  NodeInfo& operator[](Index v) {
+    int& s = slot_[v];
+    if (s < 0) {
+      s = static_cast<int>(entries_.size());
+      entries_.push_back({v, NodeInfo{}});
+    }
+    return entries_[s].second;
+  }
+  auto begin() { return entries_.begin(); }
+  auto end() { return entries_.end(); }
+  auto begin() const { return entries_.begin(); }
+  auto end() const { return entries_.end(); }
+
+ private:
+  std::vector<int> slot_;
+  std::vector<std::pair<Index, NodeInfo>> entries_;
+};
+
 struct SectionResult {
   const char* reject = nullptr;       // why no section could be built
-  std::unordered_map<Index, NodeInfo> info;
+  NodeTable info;
   std::vector<Index> near;            // nodes off the plane but too near it
   Section sec;
   std::vector<std::vector<int>> loops;   // piece ids
@@ -75,11 +98,13 @@ struct SectionResult {
   std::vector<int> loop_of;           // per piece
   std::vector<int> poly_of;           // per loop
   std::vector<std::vector<int>> polys;   // loop ids, outer first
-  SectionResult(const PolyhedralModel& m, const CutPlane& pl) : sec(m, pl) {}
+  SectionResult(const PolyhedralModel& m, const CutPlane& pl) : info(m.nodes.size()), sec(m, pl) {}
 };
 
 // Builds the section of region r. With whole_plane, a node too near the plane rejects at once.
+// `edges` is the region's edge table when the caller has it (it does not change while planes are
+// tried one after another).
 SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& pl, bool whole_plane,
-                            const DecomposeOptions& opt);
+                            const DecomposeOptions& opt, const RegionEdges* edges = nullptr);
 
 }  // namespace bisect

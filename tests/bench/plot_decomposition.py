@@ -1,0 +1,40 @@
+"""Plot of bench_decomposition's CSV: time against faces, log-log, with the fitted exponents."""
+import csv
+import math
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def fit(xs, ys):
+    lx = [math.log(x) for x in xs]
+    ly = [math.log(y) for y in ys]
+    n = len(lx)
+    mx, my = sum(lx) / n, sum(ly) / n
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+
+
+def main(src, dst):
+    rows = list(csv.DictReader(open(src)))
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for family, marker in (("sphere", "o"), ("double_sphere_hole", "s")):
+        sel = [r for r in rows if r["family"] == family]
+        faces = [int(r["faces"]) for r in sel]
+        for key, style in (("one_bisection_s", "-"), ("decomposition_s", "--")):
+            t = [float(r[key]) for r in sel]
+            label = "%s, %s (slope %.2f)" % (family, key.replace("_s", "").replace("_", " "), fit(faces, t))
+            ax.loglog(faces, t, style, marker=marker, label=label)
+    ax.set_xlabel("faces")
+    ax.set_ylabel("seconds")
+    ax.set_title("BisectMesh convex decomposition (thesis 6.10 families)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(dst, dpi=100)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
