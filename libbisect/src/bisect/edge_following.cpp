@@ -180,30 +180,13 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
   }
 
   // 4. Dry run of the face splits, then the changes.
-  for (const auto& [f, list] : chords) {
-    const ModelFace& face = m.faces[f];
-    std::vector<std::vector<Index>> lw;
-    for (const auto& loop : face.loops) {
-      lw.emplace_back();
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        lw.back().push_back(loop[i]);
-        for (std::size_t k = 0; k < mid_edge.size(); ++k)
-          if (edge_key(mid_edge[k][0], mid_edge[k][1]) == edge_key(loop[i], loop[(i + 1) % loop.size()]))
-            lw.back().push_back(-static_cast<Index>(k + 2));
-      }
-    }
-    const PlaneFrame ff(face.normal, m.nodes[face.loops[0][0]]);
-    try {
-      for (const auto& piece : split_polygon_by_chords(lw, list, [&](Index v) { return ff.to2d(pos(v)); }))
-        for (const auto& loop : piece) {
-          std::vector<Index> sorted = loop;
-          std::sort(sorted.begin(), sorted.end());
-          if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return reject("pinched_face");
-        }
-    } catch (const MeshingError&) {
-      return reject("pinched_face");
-    }
-  }
+  auto new_point = [&](Index a, Index b) -> Index {
+    for (std::size_t k = 0; k < mid_edge.size(); ++k)
+      if (edge_key(mid_edge[k][0], mid_edge[k][1]) == edge_key(a, b)) return -static_cast<Index>(k + 2);
+    return 0;
+  };
+  for (const auto& [f, list] : chords)
+    if (!face_splits_cleanly(m, f, list, new_point, pos)) return reject("pinched_face");
   std::vector<Index> real(mid_pos.size());
   for (std::size_t k = 0; k < mid_pos.size(); ++k) real[k] = m.insert_vertex_in_edge(mid_edge[k][0], mid_edge[k][1], mid_pos[k]);
   auto to_real = [&](Index v) { return v >= 0 ? v : real[-v - 2]; };

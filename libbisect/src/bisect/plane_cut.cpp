@@ -102,30 +102,13 @@ CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea,
         auto& list = chords[pc.face];
         if (std::find(list.begin(), list.end(), c) == list.end()) list.push_back(c);
       }
-  for (const auto& [f, list] : chords) {
-    const ModelFace& face = m.faces[f];
-    std::vector<std::vector<Index>> loops_with_points;
-    for (const auto& loop : face.loops) {
-      loops_with_points.emplace_back();
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        loops_with_points.back().push_back(loop[i]);
-        auto it = crossing.find(edge_key(loop[i], loop[(i + 1) % loop.size()]));
-        if (it != crossing.end()) loops_with_points.back().push_back(prov(it->second));
-      }
-    }
-    const PlaneFrame ff(face.normal, m.nodes[face.loops[0][0]]);
-    auto pos = [&](Index v) { return ff.to2d(v >= 0 ? m.nodes[v] : sec.pts[-v - 2].p); };
-    try {
-      for (const auto& piece : split_polygon_by_chords(loops_with_points, list, pos))
-        for (const auto& loop : piece) {
-          std::vector<Index> sorted = loop;
-          std::sort(sorted.begin(), sorted.end());
-          if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return reject("pinched_face");
-        }
-    } catch (const MeshingError&) {
-      return reject("pinched_face");
-    }
-  }
+  auto new_point = [&](Index a, Index b) -> Index {
+    auto it = crossing.find(edge_key(a, b));
+    return it == crossing.end() ? 0 : prov(it->second);
+  };
+  auto pos = [&](Index v) { return v >= 0 ? m.nodes[v] : sec.pts[-v - 2].p; };
+  for (const auto& [f, list] : chords)
+    if (!face_splits_cleanly(m, f, list, new_point, pos)) return reject("pinched_face");
 
   // 8. Insert: vertices into edges, chords into faces, polygons into the region.
   std::vector<Index> vert(sec.pts.size(), -1);

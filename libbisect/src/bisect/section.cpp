@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "bisect/errors.hpp"
 #include "domain/face_split.hpp"
 
 namespace bisect {
@@ -30,6 +31,31 @@ int next_piece(const Section& s, const std::vector<std::vector<int>>& outs, int 
 }
 
 }  // namespace
+
+bool face_splits_cleanly(const PolyhedralModel& m, Index f, const std::vector<std::array<Index, 2>>& chords,
+                         const std::function<Index(Index, Index)>& new_point, const std::function<Vec3(Index)>& pos) {
+  const ModelFace& face = m.faces[f];
+  std::vector<std::vector<Index>> loops;
+  for (const auto& loop : face.loops) {
+    loops.emplace_back();
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      loops.back().push_back(loop[i]);
+      if (const Index p = new_point(loop[i], loop[(i + 1) % loop.size()])) loops.back().push_back(p);
+    }
+  }
+  const PlaneFrame ff(face.normal, m.nodes[face.loops[0][0]]);
+  try {
+    for (const auto& piece : split_polygon_by_chords(loops, chords, [&](Index v) { return ff.to2d(pos(v)); }))
+      for (const auto& loop : piece) {
+        std::vector<Index> sorted = loop;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+      }
+  } catch (const MeshingError&) {
+    return false;
+  }
+  return true;
+}
 
 SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& pl, bool whole_plane,
                             const DecomposeOptions& opt, const RegionEdges* given_edges) {

@@ -5,7 +5,9 @@
 // seen from the plane's positive side, closed into loops and grouped into polygons (outer loop,
 // counter-clockwise by the A3 angle sum, and its holes).
 #pragma once
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -100,6 +102,12 @@ struct SectionResult {
   std::vector<std::vector<int>> polys;   // loop ids, outer first
   SectionResult(const PolyhedralModel& m, const CutPlane& pl) : info(m.nodes.size()), sec(m, pl) {}
 };
+
+// Dry run of a face split before the model changes: whether splitting face f along `chords`
+// gives simple polygons. New points have provisional negative ids: new_point(a, b) is the one
+// that will be inserted into edge (a, b), or 0 for none; pos gives any id's position.
+bool face_splits_cleanly(const PolyhedralModel& m, Index f, const std::vector<std::array<Index, 2>>& chords,
+                         const std::function<Index(Index, Index)>& new_point, const std::function<Vec3(Index)>& pos);
 
 // Builds the section of region r. With whole_plane, a node too near the plane rejects at once.
 // `edges` is the region's edge table when the caller has it (it does not change while planes are

@@ -6,6 +6,7 @@
 
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "bisect/shared_models.hpp"
 #include "decomposition_checker.hpp"
 
 namespace bisect {
@@ -43,17 +44,8 @@ TEST_P(CellsFile, IndependentCheckerAcceptsTheCells) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shared, CellsFile,
-                         ::testing::Values("examples/cube-cavity-adjacent-cube.poly", "examples/reentry-box.poly",
-                                           "models/stl/Angled.stl", "models/stl/bl3d_4.stl",
-                                           "models/stl/box-cavity.stl", "models/stl/cantilever.stl",
-                                           "models/stl/flange.stl", "models/stl/lug.stl", "models/stl/part.stl",
-                                           "models/stl/plate-hole.stl", "models/stl/slender-appendage.stl"),
-                         [](const auto& info) {
-                           std::string s = fs::path(info.param).stem().string();
-                           for (char& c : s)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return s;
-                         });
+                         ::testing::ValuesIn(test::kSharedPolyhedralInputs),
+                         [](const auto& info) { return test::test_name_of(info.param); });
 
 TEST(CellsFile, BundledExamplesWithoutShared) {
   for (const char* f : {"cube-cavity-adjacent-cube.poly", "reentry-box.poly"}) {

@@ -8,46 +8,20 @@
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "bisect/shared_models.hpp"
 #include "bisect/decomposition_checks.hpp"
 #include "input_error.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect {
 namespace {
 
 namespace fs = std::filesystem;
 
-PolyInput poly(const std::string& text) {
-  std::istringstream in(text);
-  return read_poly(in, "test.poly");
-}
-
-// An L-shaped prism: one reflex edge, whose face extensions split it into two boxes.
-const char* kLPrism = R"(8 12 1 0
-0 0 0
-2 0 0
-2 1 0
-1 1 0
-1 2 0
-0 2 0
-0 0 1
-2 0 1
-2 1 1
-1 1 1
-1 2 1
-0 2 1
-6 1 2 3 4 5 6
-6 7 8 9 10 11 12
-4 1 2 8 7
-4 2 3 9 8
-4 3 4 10 9
-4 4 5 11 10
-4 5 6 12 11
-4 6 1 7 12
-8 1 2 3 4 5 6 7 8
-)";
+using test::poly;
 
 TEST(Decompose, LPrismBecomesTwoBoxes) {
-  const Decomposition d = decompose(poly(kLPrism));
+  const Decomposition d = decompose(poly(test::l_prism()));
   ASSERT_EQ(d.cells.size(), 2u);
   test::expect_valid_cells(d, 3.0);
   EXPECT_EQ(d.stats.bisections.at("cut_face"), 1u);
@@ -63,23 +37,7 @@ TEST(Decompose, LPrismBecomesTwoBoxes) {
 }
 
 TEST(Decompose, ConvexInputIsOneCell) {
-  const Decomposition d = decompose(poly(R"(6 8 1 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-4 1 2 3 4
-4 5 6 7 8
-4 1 2 6 5
-4 2 3 7 6
-4 3 4 8 7
-4 4 1 5 8
-6 1 2 3 4 5 6
-)"));
+  const Decomposition d = decompose(poly(test::unit_cube()));
   ASSERT_EQ(d.cells.size(), 1u);
   EXPECT_TRUE(d.stats.bisections.empty());
   test::expect_valid_cells(d, 1.0);
@@ -116,26 +74,17 @@ TEST_P(DecomposeSharedModels, CellsAreConvexAndCoverTheInput) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, DecomposeSharedModels,
-                         ::testing::Values("examples/cube-cavity-adjacent-cube.poly", "examples/reentry-box.poly",
-                                           "models/stl/Angled.stl", "models/stl/bl3d_4.stl",
-                                           "models/stl/box-cavity.stl", "models/stl/cantilever.stl",
-                                           "models/stl/flange.stl", "models/stl/lug.stl", "models/stl/part.stl",
-                                           "models/stl/plate-hole.stl", "models/stl/slender-appendage.stl"),
-                         [](const auto& info) {
-                           std::string s = fs::path(info.param).stem().string();
-                           for (char& c : s)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return s;
-                         });
+                         ::testing::ValuesIn(test::kSharedPolyhedralInputs),
+                         [](const auto& info) { return test::test_name_of(info.param); });
 
 TEST(Decompose, CancelStopsTheWork) {
   DecomposeOptions opt;
   opt.progress = [](double) { return false; };
-  EXPECT_THROW(decompose(poly(kLPrism), opt), Cancelled);
+  EXPECT_THROW(decompose(poly(test::l_prism()), opt), Cancelled);
 }
 
 TEST(Decompose, StatsJsonNamesTheFigures) {
-  const Decomposition d = decompose(poly(kLPrism));
+  const Decomposition d = decompose(poly(test::l_prism()));
   const std::string j = decompose_stats_json(d.stats);
   for (const char* key : {"\"convex_cells\": 2", "\"bisections\"", "\"cut_face\": 1", "\"rejected_planes\"", "\"init_geom\"", "\"bisect\""})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;

@@ -9,36 +9,13 @@
 #include "bisect/io.hpp"
 #include "bisect/plane_cut.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect {
 namespace {
 
-PolyhedralModel model(const std::string& text) {
-  std::istringstream in(text);
-  return prepare_model(read_poly(in, "t.poly"));
-}
-
-// An extruded outline (counter-clockwise, z from 0 to 1) as .poly text.
-std::string prism(const std::vector<Vec2>& outline) {
-  const std::size_t n = outline.size();
-  std::ostringstream s;
-  s << n + 2 << ' ' << 2 * n << " 1 0\n";
-  for (int z = 0; z < 2; ++z)
-    for (const Vec2& p : outline) s << p.x() << ' ' << p.y() << ' ' << z << '\n';
-  for (int z = 0; z < 2; ++z) {
-    s << n;
-    for (std::size_t i = 0; i < n; ++i) s << ' ' << z * n + i + 1;
-    s << '\n';
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = (i + 1) % n;
-    s << "4 " << i + 1 << ' ' << j + 1 << ' ' << n + j + 1 << ' ' << n + i + 1 << '\n';
-  }
-  s << n + 2;
-  for (std::size_t f = 1; f <= n + 2; ++f) s << ' ' << f;
-  s << '\n';
-  return s.str();
-}
+PolyhedralModel model(const std::string& text) { return prepare_model(test::poly(text)); }
+using test::prism;
 
 double total_volume(const PolyhedralModel& m) {
   double v = 0;
@@ -46,7 +23,7 @@ double total_volume(const PolyhedralModel& m) {
   return v;
 }
 
-const std::vector<Vec2> kL = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+const std::vector<Vec2> kL = test::kLOutline;
 const std::vector<Vec2> kU = {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
 
 TEST(PlaneCut, CutFaceInsertsOnlyThePolygonAtTheEdge) {

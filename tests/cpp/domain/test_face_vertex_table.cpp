@@ -7,39 +7,15 @@
 
 #include "bisect/io.hpp"
 #include "domain/face_vertex_table.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect {
 namespace {
 
-PolyhedralModel model(const std::string& text) {
-  std::istringstream in(text);
-  return prepare_model(read_poly(in, "t.poly"));
-}
+PolyhedralModel model(const std::string& text) { return prepare_model(test::poly(text)); }
 
 TEST(FaceVertexTable, LoopsNeighboursAndAnglesStoredOnce) {
-  const PolyhedralModel m = model(R"(8 12 1 0
-0 0 0
-2 0 0
-2 1 0
-1 1 0
-1 2 0
-0 2 0
-0 0 1
-2 0 1
-2 1 1
-1 1 1
-1 2 1
-0 2 1
-6 1 2 3 4 5 6
-6 7 8 9 10 11 12
-4 1 2 8 7
-4 2 3 9 8
-4 3 4 10 9
-4 4 5 11 10
-4 5 6 12 11
-4 6 1 7 12
-8 1 2 3 4 5 6 7 8
-)");
+  const PolyhedralModel m = model(test::l_prism());
   const FaceVertexTable t = build_face_vertex_table(m, 0);
   ASSERT_EQ(t.entries.size(), 2u * 6 + 6u * 4);
   std::size_t stored = 0, reflex = 0;

@@ -7,6 +7,7 @@
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/face_split.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect {
 namespace {
@@ -24,23 +25,7 @@ PolyhedralModel square_model(std::vector<Vec3> pts, std::vector<std::vector<Inde
 }
 
 TEST(PolyhedralModel, VertexGoesIntoEveryFaceOfTheEdge) {
-  std::istringstream in(R"(6 8 1 0
-0 0 0
-1 0 0
-1 1 0
-0 1 0
-0 0 1
-1 0 1
-1 1 1
-0 1 1
-4 1 2 3 4
-4 5 6 7 8
-4 1 2 6 5
-4 2 3 7 6
-4 3 4 8 7
-4 4 1 5 8
-6 1 2 3 4 5 6
-)");
+  std::istringstream in(test::unit_cube());
   PolyhedralModel m = prepare_model(read_poly(in, "cube.poly"));
   const Index v = m.insert_vertex_in_edge(0, 1, Vec3(0.5, 0, 0));
   int with = 0;

@@ -7,16 +7,14 @@
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "input_error.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect {
 namespace {
 
 using test::error_of;
 
-PolyInput poly(const std::string& text) {
-  std::istringstream in(text);
-  return read_poly(in, "test.poly");
-}
+using test::poly;
 
 // A unit cube; faces 1, 3 and 5 run clockwise seen from outside, as .poly allows.
 const char* kCube = R"(6 8 1 0

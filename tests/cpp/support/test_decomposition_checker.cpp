@@ -7,14 +7,12 @@
 
 #include "bisect/io.hpp"
 #include "decomposition_checker.hpp"
+#include "poly_shapes.hpp"
 
 namespace bisect::testing {
 namespace {
 
-PolyInput poly(const std::string& text) {
-  std::istringstream in(text);
-  return read_poly(in, "t.poly");
-}
+using test::poly;
 
 // Boxes [x0,x1] x [0,1] x [0,1] as cells; `split` lists the x planes. Faces between cells are
 // shared; `t_junction` lists the middle face twice (one side whole, other side in two halves).
@@ -121,29 +119,7 @@ TEST(DecompositionChecker, FindsATJunction) {
 
 TEST(DecompositionChecker, FindsANonConvexCell) {
   // an L-shaped prism given as one cell
-  const PolyInput l = poly(R"(8 12 1 0
-0 0 0
-2 0 0
-2 1 0
-1 1 0
-1 2 0
-0 2 0
-0 0 1
-2 0 1
-2 1 1
-1 1 1
-1 2 1
-0 2 1
-6 1 2 3 4 5 6
-6 7 8 9 10 11 12
-4 1 2 8 7
-4 2 3 9 8
-4 3 4 10 9
-4 4 5 11 10
-4 5 6 12 11
-4 6 1 7 12
-8 1 2 3 4 5 6 7 8
-)");
+  const PolyInput l = poly(test::l_prism());
   const CellCheck c = check_decomposition(l, l, {0});
   std::string all;
   for (const auto& p : c.problems) all += p + "\n";
