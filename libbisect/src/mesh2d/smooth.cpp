@@ -4,7 +4,7 @@
 #include <map>
 
 #include "geom/predicates.hpp"
-#include "mesh2d/tri_quality.hpp"
+#include <cmath>
 
 namespace bisect::mesh2d {
 
@@ -13,37 +13,44 @@ SmoothStats smooth_laplace(TriMesh2& m, const SmoothOptions& opt) {
   const std::size_t n = m.nodes.size();
   std::vector<char> pinned(n, 0);
   for (std::size_t v = 0; v < n && v < m.fixed.size(); ++v) pinned[v] = m.fixed[v];
-  // an edge with one triangle, or triangles of two regions, is boundary or interface
+  // Elements as corner lists (triangles, then quadrilaterals) with their regions.
+  std::vector<std::vector<Index>> els;
+  std::vector<Index> region;
+  for (std::size_t t = 0; t < m.tris.size(); ++t) els.push_back({m.tris[t].begin(), m.tris[t].end()}), region.push_back(m.tri_region[t]);
+  for (std::size_t q = 0; q < m.quads.size(); ++q) els.push_back({m.quads[q].begin(), m.quads[q].end()}), region.push_back(m.quad_region[q]);
+  // an edge with one element, or elements of two regions, is boundary or interface
   std::map<std::pair<Index, Index>, std::pair<int, Index>> edges;  // count, region
-  for (std::size_t t = 0; t < m.tris.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const Index a = m.tris[t][k], b = m.tris[t][(k + 1) % 3];
-      auto& e = edges[{std::min(a, b), std::max(a, b)}];
-      if (e.first == 0) e.second = m.tri_region[t];
-      else if (e.second != m.tri_region[t]) e.first = 99;
-      ++e.first;
+  for (std::size_t e = 0; e < els.size(); ++e)
+    for (std::size_t k = 0; k < els[e].size(); ++k) {
+      const Index a = els[e][k], b = els[e][(k + 1) % els[e].size()];
+      auto& c = edges[{std::min(a, b), std::max(a, b)}];
+      if (c.first == 0) c.second = region[e];
+      else if (c.second != region[e]) c.first = 99;
+      ++c.first;
     }
   for (const auto& [e, c] : edges)
     if (c.first != 2) pinned[e.first] = pinned[e.second] = 1;
-  for (const auto& q : m.quads)
-    for (Index v : q) pinned[v] = 1;  // quads keep their nodes: smoothing is for triangles
   std::vector<std::vector<Index>> nbr(n), around(n);
-  for (std::size_t t = 0; t < m.tris.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const Index a = m.tris[t][k];
-      around[a].push_back(static_cast<Index>(t));
-      for (int j = 1; j < 3; ++j) {
-        const Index b = m.tris[t][(k + j) % 3];
+  for (std::size_t e = 0; e < els.size(); ++e)
+    for (std::size_t k = 0; k < els[e].size(); ++k) {
+      const Index a = els[e][k];
+      around[a].push_back(static_cast<Index>(e));
+      for (Index b : {els[e][(k + 1) % els[e].size()], els[e][(k + els[e].size() - 1) % els[e].size()]})
         if (std::find(nbr[a].begin(), nbr[a].end(), b) == nbr[a].end()) nbr[a].push_back(b);
-      }
     }
+  // the smallest corner of the elements around v; *valid false when one is not strictly convex
   auto local = [&](Index v, bool* valid) {
     double worst = 180;
     *valid = true;
-    for (Index t : around[v]) {
-      const auto& T = m.tris[t];
-      if (geom::orient2d(m.nodes[T[0]], m.nodes[T[1]], m.nodes[T[2]]) <= 0) *valid = false;
-      worst = std::min(worst, min_angle_deg(m.nodes[T[0]], m.nodes[T[1]], m.nodes[T[2]]));
+    for (Index e : around[v]) {
+      const auto& E = els[e];
+      const std::size_t k = E.size();
+      for (std::size_t i = 0; i < k; ++i) {
+        const Vec2 &p = m.nodes[E[(i + k - 1) % k]], &c = m.nodes[E[i]], &q = m.nodes[E[(i + 1) % k]];
+        if (geom::orient2d(p, c, q) <= 0) *valid = false;
+        const Vec2 a = p - c, b = q - c;
+        worst = std::min(worst, std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b)) * 180 / M_PI);
+      }
     }
     return worst;
   };

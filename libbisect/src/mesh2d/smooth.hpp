@@ -1,7 +1,8 @@
 // Laplace smoothing (thesis 4.4.2): each free node moves to the average of the nodes joined to
-// it. A move is made only if no triangle around the node turns over and the smallest angle
-// around it does not get smaller (the safeguard the plain method lacks on concave regions).
-// Fixed nodes, and nodes on boundary or interface edges, stay.
+// it. A move is made only if every element around the node stays strictly convex (triangles do
+// not turn over, quadrilaterals do not fold) and the smallest angle around it does not get
+// smaller (the safeguard the plain method lacks on concave regions). Fixed nodes, and nodes on
+// boundary or interface edges, stay. Works on mixed triangle and quadrilateral meshes.
 #pragma once
 #include <cstdint>
 

@@ -2,37 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "geom/predicates.hpp"
+#include "mesh2d/tri_adjacency.hpp"
 #include "mesh2d/tri_quality.hpp"
 
 namespace bisect::mesh2d {
 namespace {
 
 using geom::orient2d;
-
-// neighbour[t][k]: the triangle across the edge opposite corner k of t (-1 for none), as
-// (triangle, its corner opposite that edge).
-using Across = std::vector<std::array<std::pair<int, int>, 3>>;
-Across neighbours(const TriMesh2& m) {
-  Across nb(m.tris.size());
-  std::map<std::pair<Index, Index>, std::pair<int, int>> open;
-  for (std::size_t t = 0; t < m.tris.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      nb[t][k] = {-1, -1};
-      const Index a = m.tris[t][(k + 1) % 3], b = m.tris[t][(k + 2) % 3];
-      auto it = open.find({b, a});
-      if (it != open.end()) {
-        nb[t][k] = it->second;
-        nb[it->second.first][it->second.second] = {static_cast<int>(t), k};
-        open.erase(it);
-      } else {
-        open[{a, b}] = {static_cast<int>(t), k};
-      }
-    }
-  return nb;
-}
 
 struct Candidate {
   int j = -1, kj = -1;  // the neighbour and its corner opposite the shared edge
@@ -46,7 +24,7 @@ SwapStats swap_edges(TriMesh2& m, const SwapOptions& opt) {
   std::vector<char> active(m.tris.size(), 1);
   double last_min = -1;
   for (int pass = 0; pass < opt.max_passes; ++pass) {
-    const Across nb = neighbours(m);
+    const TriAcross nb = triangle_neighbours(m);
     std::vector<char> next(m.tris.size(), 0);
     // triangles a swap of this pass changed, or whose neighbour it changed: the table is stale
     // around them, so they wait for the next pass

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "geom/predicates.hpp"
+#include "mesh2d/quads.hpp"
 #include "mesh2d/smooth.hpp"
 #include "mesh2d/swap.hpp"
 #include "mesh2d/tri_quality.hpp"
@@ -64,6 +65,11 @@ void expect_valid(const TriMesh2& m, double area) {
     EXPECT_GT(geom::orient2d(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]]), 0);
     for (int k = 0; k < 3; ++k) ++e[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
   }
+  for (const auto& q : m.quads)
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_GT(geom::orient2d(m.nodes[q[(k + 3) % 4]], m.nodes[q[k]], m.nodes[q[(k + 1) % 4]]), 0);  // convex
+      ++e[{std::min(q[k], q[(k + 1) % 4]), std::max(q[k], q[(k + 1) % 4])}];
+    }
   for (const auto& [k, c] : e) EXPECT_LE(c, 2);
   EXPECT_NEAR(total_area(m), area, 1e-12 * area);
 }
@@ -133,6 +139,39 @@ TEST(LaplaceSmoothing, ConcaveRegionAndHoleStayValid) {
   expect_valid(m, area);
   EXPECT_EQ(fixed_edges(m), kept);
   EXPECT_GT(min_angle_deg(m), 20.0);
+}
+
+TEST(WalkingQuads, NoAngleUnderTwentyDegreesAreaKept) {
+  TriMesh2 m = grid(20, 0.3, 8, 10, {{4, 4}, {4, 5}});
+  swap_edges(m);
+  const double area = total_area(m);
+  const std::size_t tris = m.tris.size();
+  const QuadStats st = make_quads(m);
+  EXPECT_GT(st.quads, static_cast<std::int64_t>(tris / 4));  // most triangles pair up
+  EXPECT_EQ(static_cast<std::size_t>(2 * st.quads + st.triangles_left), tris);
+  expect_valid(m, area);
+  for (const auto& q : m.quads) {
+    TriMesh2 one;
+    one.nodes = m.nodes;
+    one.quads = {q};
+    EXPECT_GE(min_angle_deg(one), 20.0);
+  }
+  // no quad mixes the two regions (cells with x < 10 are region 0; nodes moved by under 0.3)
+  ASSERT_EQ(m.quads.size(), m.quad_region.size());
+  for (std::size_t q = 0; q < m.quads.size(); ++q) {
+    Vec2 c = Vec2::Zero();
+    for (Index v : m.quads[q]) c += m.nodes[v] / 4;
+    if (m.quad_region[q] == 0) EXPECT_LT(c.x(), 10.3);
+    else EXPECT_GT(c.x(), 9.7);
+  }
+}
+
+TEST(WalkingQuads, StructuredGridBecomesAllQuads) {
+  TriMesh2 m = grid(10, 0.0, 9);
+  const QuadStats st = make_quads(m, {20, 0});
+  EXPECT_EQ(st.quads, 100);  // every pair of triangles is a unit square
+  EXPECT_EQ(st.triangles_left, 0);
+  EXPECT_NEAR(st.min_angle_deg, 90.0, 1e-9);
 }
 
 }  // namespace
