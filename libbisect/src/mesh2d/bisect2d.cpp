@@ -1,0 +1,225 @@
+#include "mesh2d/bisect2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bisect/errors.hpp"
+#include "geom/predicates.hpp"
+#include "mesh2d/tri_quality.hpp"
+
+namespace bisect::mesh2d {
+namespace {
+
+using geom::orient2d;
+
+struct Work {
+  std::vector<Index> loop, inside;
+};
+
+bool proper_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+// Whether segment p q (between loop nodes or inside nodes) stays inside the loop: it crosses
+// no loop edge, passes through no loop node, and leaves p into the interior when p is a loop node.
+bool segment_inside(const std::vector<Vec2>& X, const std::vector<Index>& loop, Index p, Index q) {
+  const std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Index a = loop[i], b = loop[(i + 1) % n];
+    if (a == p || a == q || b == p || b == q) continue;
+    if (proper_cross(X[p], X[q], X[a], X[b])) return false;
+    // a loop node on the segment
+    if (orient2d(X[p], X[q], X[a]) == 0 && (X[a] - X[p]).dot(X[a] - X[q]) < 0) return false;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (loop[i] != p) continue;
+    const Vec2 &prev = X[loop[(i + n - 1) % n]], &v = X[p], &next = X[loop[(i + 1) % n]];
+    const Vec2& w = X[q];
+    // inside the interior angle at v (counter-clockwise from v->next to v->prev)
+    if (orient2d(prev, v, next) > 0) {
+      if (!(orient2d(v, next, w) > 0 && orient2d(prev, v, w) > 0)) return false;
+    } else if (orient2d(v, next, w) <= 0 && orient2d(prev, v, w) <= 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+double loop_spacing(const std::vector<Vec2>& X, const std::vector<Index>& loop) {
+  double s = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) s += (X[loop[i]] - X[loop[(i + 1) % loop.size()]]).norm();
+  return s / static_cast<double>(loop.size());
+}
+
+// Splits w along the path from loop[i] to loop[j] through the given inside nodes, when valid.
+bool split_along(const std::vector<Vec2>& X, const Work& w, std::size_t i, std::size_t j, const std::vector<Index>& via,
+                 Work* a, Work* b) {
+  const std::size_t n = w.loop.size();
+  std::vector<Index> path{w.loop[i]};
+  path.insert(path.end(), via.begin(), via.end());
+  path.push_back(w.loop[j]);
+  for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    if (!segment_inside(X, w.loop, path[k], path[k + 1])) return false;
+  a->loop.clear(), b->loop.clear(), a->inside.clear(), b->inside.clear();
+  for (std::size_t k = i; k != j; k = (k + 1) % n) a->loop.push_back(w.loop[k]);
+  a->loop.push_back(w.loop[j]);
+  for (std::size_t k = via.size(); k-- > 0;) a->loop.push_back(via[k]);
+  for (std::size_t k = j; k != i; k = (k + 1) % n) b->loop.push_back(w.loop[k]);
+  b->loop.push_back(w.loop[i]);
+  b->loop.insert(b->loop.end(), via.begin(), via.end());
+  // the other inside nodes go to the part that holds them (exact crossing parity on loop a)
+  auto in_a = [&](const Vec2& p) {
+    bool in = false;
+    const std::size_t m = a->loop.size();
+    for (std::size_t k = 0; k < m; ++k) {
+      const Vec2 &u = X[a->loop[k]], &v = X[a->loop[(k + 1) % m]];
+      if ((u.y() > p.y()) != (v.y() > p.y())) {
+        const int o = orient2d(u, v, p);
+        if ((v.y() > u.y() ? o : -o) > 0) in = !in;
+      }
+    }
+    return in;
+  };
+  for (Index p : w.inside) {
+    if (std::find(via.begin(), via.end(), p) != via.end()) continue;
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)  // a node on the new boundary: no split here
+      if (orient2d(X[path[k]], X[path[k + 1]], X[p]) == 0 && (X[p] - X[path[k]]).dot(X[p] - X[path[k + 1]]) <= 0) return false;
+    (in_a(X[p]) ? a : b)->inside.push_back(p);
+  }
+  // both parts must run counter-clockwise (a path leaving the polygon would turn one over)
+  auto area2 = [&](const std::vector<Index>& l) {
+    double s2 = 0;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      const Vec2 &u = X[l[k]], &v = X[l[(k + 1) % l.size()]];
+      s2 += u.x() * v.y() - u.y() * v.x();
+    }
+    return s2;
+  };
+  if (area2(a->loop) <= 0 || area2(b->loop) <= 0) return false;
+  return a->loop.size() >= 3 && b->loop.size() >= 3;
+}
+
+// 4.3.3: cut off the vertex whose triangle has the largest smallest angle and holds nothing.
+bool remove_vertex(const std::vector<Vec2>& X, Work& w, std::vector<std::array<Index, 3>>& tris) {
+  const std::size_t n = w.loop.size();
+  int best = -1;
+  double best_angle = -1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Index a = w.loop[(k + n - 1) % n], v = w.loop[k], b = w.loop[(k + 1) % n];
+    if (orient2d(X[a], X[v], X[b]) <= 0) continue;
+    bool empty = true;
+    for (Index p : w.inside) empty &= !(orient2d(X[a], X[v], X[p]) >= 0 && orient2d(X[v], X[b], X[p]) >= 0 && orient2d(X[b], X[a], X[p]) >= 0);
+    for (Index p : w.loop)
+      if (p != a && p != v && p != b)
+        empty &= !(orient2d(X[a], X[v], X[p]) >= 0 && orient2d(X[v], X[b], X[p]) >= 0 && orient2d(X[b], X[a], X[p]) >= 0);
+    if (!empty || (n > 3 && !segment_inside(X, w.loop, a, b))) continue;
+    const double ang = min_angle_deg(X[a], X[v], X[b]);
+    if (ang > best_angle) best_angle = ang, best = static_cast<int>(k);
+  }
+  if (best < 0) return false;
+  const Index a = w.loop[(best + n - 1) % n], v = w.loop[best], b = w.loop[(best + 1) % n];
+  tris.push_back({a, v, b});
+  w.loop.erase(w.loop.begin() + best);
+  return true;
+}
+
+// A triangle with nodes inside: join two corners to the inside node that makes the best triangle.
+bool split_triangle(const std::vector<Vec2>& X, Work& w, std::vector<std::array<Index, 3>>& tris) {
+  double best = -1;
+  int bk = -1;
+  Index bp = -1;
+  for (int k = 0; k < 3; ++k)
+    for (Index p : w.inside) {
+      const double ang = min_angle_deg(X[w.loop[k]], X[w.loop[(k + 1) % 3]], X[p]);
+      if (ang > best) best = ang, bk = k, bp = p;
+    }
+  if (bk < 0) return false;
+  const Index a = w.loop[bk], b = w.loop[(bk + 1) % 3], c = w.loop[(bk + 2) % 3];
+  if (orient2d(X[a], X[b], X[bp]) <= 0) return false;
+  tris.push_back({a, b, bp});
+  w.loop = {b, c, a, bp};
+  w.inside.erase(std::find(w.inside.begin(), w.inside.end(), bp));
+  return true;
+}
+
+}  // namespace
+
+void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>& loop, const std::vector<Index>& inside,
+                           std::vector<std::array<Index, 3>>& tris) {
+  std::vector<Work> stack{{loop, inside}};
+  while (!stack.empty()) {
+    Work w = std::move(stack.back());
+    stack.pop_back();
+    const std::size_t n = w.loop.size();
+    if (n < 3) throw MeshingError("recursive bisection: a region with fewer than three boundary nodes");
+    if (n == 3 && w.inside.empty()) {
+      if (orient2d(X[w.loop[0]], X[w.loop[1]], X[w.loop[2]]) <= 0) throw MeshingError("recursive bisection: a flat triangle");
+      tris.push_back({w.loop[0], w.loop[1], w.loop[2]});
+      continue;
+    }
+    if (n == 3) {
+      if (!split_triangle(X, w, tris)) throw MeshingError("recursive bisection: a triangle with nodes inside cannot be split");
+      stack.push_back(std::move(w));
+      continue;
+    }
+    // 4.3.1: candidate lines between nearly opposite boundary nodes, the best weight wins
+    const double half_spacing = 0.5 * loop_spacing(X, w.loop);
+    struct Candidate {
+      double weight;
+      std::size_t i, j;
+      std::vector<Index> via;
+    };
+    std::vector<Candidate> candidates;
+    const std::size_t starts = std::min<std::size_t>(n, 12);
+    for (std::size_t s = 0; s < starts; ++s) {
+      const std::size_t i = s * n / starts;
+      for (int off = -2; off <= 2; ++off) {
+        const std::size_t j = (i + n / 2 + n + static_cast<std::size_t>(off + 2) - 2) % n;
+        if (j == i || (j + 1) % n == i || (i + 1) % n == j) continue;
+        const Vec2 p = X[w.loop[i]], q = X[w.loop[j]], d = (q - p);
+        const double len = d.norm();
+        if (len <= 0) continue;
+        const Vec2 u = d / len;
+        // E: half the spacing, or the distance of the nearest inside node within the rectangle
+        double E = half_spacing;
+        std::vector<std::pair<double, Index>> near;
+        for (Index v : w.inside) {
+          const Vec2 r = X[v] - p;
+          const double t = r.dot(u), dist = std::abs(u.x() * r.y() - u.y() * r.x());
+          if (t <= 0 || t >= len) continue;
+          if (dist < half_spacing) near.push_back({t, v});  // 4.3.2: joins the new boundary
+          else E = std::min(E, dist);
+        }
+        std::sort(near.begin(), near.end());
+        Candidate c{0, i, j, {}};
+        for (const auto& [t, v] : near) c.via.push_back(v);
+        std::size_t count = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+          if (k == i || k == j) continue;
+          const Vec2 r = X[w.loop[k]] - p;
+          c.weight += std::log(std::max(std::abs(u.x() * r.y() - u.y() * r.x()), 1e-300));
+          ++count;
+        }
+        c.weight += static_cast<double>(count) * std::log(E);
+        candidates.push_back(std::move(c));
+      }
+    }
+    // the heaviest line that gives a valid split (validation costs more than weighing)
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) { return x.weight > y.weight; });
+    bool split = false;
+    for (const Candidate& c : candidates) {
+      Work a, b;
+      if (!split_along(X, w, c.i, c.j, c.via, &a, &b)) continue;
+      stack.push_back(std::move(a));
+      stack.push_back(std::move(b));
+      split = true;
+      break;
+    }
+    if (split) continue;
+    if (!remove_vertex(X, w, tris)) throw MeshingError("recursive bisection: a region with no split and no removable vertex");
+    stack.push_back(std::move(w));
+  }
+}
+
+}  // namespace bisect::mesh2d
