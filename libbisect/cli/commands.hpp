@@ -30,6 +30,7 @@ struct MeshOptions {
   std::string stats;       // --stats FILE (JSON)
   bool cells_only = false; // --cells-only: stop after the convex decomposition, write .poly cells
   std::int64_t elements = 0;  // -n (0: the input's R)
+  bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
   bool quiet = false;
 };
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err);

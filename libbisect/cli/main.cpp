@@ -1,6 +1,7 @@
 // bisect-mesh: the command-line face of the library. Exit codes (ARCHITECTURE.md §3): 0 done;
 // 2 bad input or options, with one line on stderr naming what and where; 3 the mesher could not
 // finish. No exception escapes: every failure becomes such a line.
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -17,12 +18,16 @@ const char* kUsage =
     "       bisect-mesh COMMAND [OPTIONS] FILE\n"
     "\n"
     "main job:\n"
-    "  INPUT           .poly (thesis 6.13), .stl or .off polyhedral input\n"
+    "  INPUT           .poly (thesis 6.13), .stl or .off polyhedral input, or .poly2 (thesis 4.6.1)\n"
+    "                  2D input, meshed into triangles (written as .vtu)\n"
     "  -o OUTPUT       where the result goes\n"
+    "  -n ELEMENTS     the required number of elements (default: the input's own R)\n"
+    "  --quads         2D: pair triangles into quadrilaterals (no angle under 20 degrees)\n"
     "  --cells-only    stop after the convex decomposition and write the convex cells as a\n"
     "                  .poly file, one region per cell, cells sharing their faces\n"
     "  --stats FILE    write statistics as JSON: convex_cells, bisections by method,\n"
-    "                  rejected_planes by reason, deferred_edges, times (init_geom, bisect)\n"
+    "                  rejected_planes by reason, deferred_edges, times (init_geom, bisect);\n"
+    "                  2D: nodes, triangles, quads, convex_pieces, min_angle, max_angle, times\n"
     "\n"
     "commands:\n"
     "  info INPUT      read and check a polyhedral input (.poly, .stl, .off) or a 2D input\n"
@@ -73,6 +78,15 @@ int main(int argc, char** argv) {
       if (!value(&mesh.output)) return usage_error(a + " needs a file name");
     } else if (a == "--stats") {
       if (!value(&mesh.stats)) return usage_error(a + " needs a file name");
+    } else if (a == "--quads") {
+      mesh.quads = true;
+    } else if (a == "-n" || a == "--elements") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number of elements");
+      char* end = nullptr;
+      const long long n = std::strtoll(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end != '\0' || n <= 0) return usage_error(a + " needs a positive whole number, not '" + v + "'");
+      mesh.elements = n;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {

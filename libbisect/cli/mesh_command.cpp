@@ -7,6 +7,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "mesh2d/planar_mesher.hpp"
 #include "commands.hpp"
 
 namespace bisect::cli {
@@ -21,6 +22,26 @@ bool ends_with(const std::string& s, const std::string& tail) {
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err) {
   (void)err;
   if (opt.output.empty()) throw InputError("no output file given (-o OUTPUT)");
+  if (ends_with(input, ".poly2")) {  // a planar mesh (thesis ch. 4)
+    if (opt.cells_only) throw InputError("--cells-only is for polyhedral inputs; " + input + " is a 2D input");
+    if (!ends_with(opt.output, ".vtu")) throw InputError(opt.output + ": 2D meshes are written as .vtu");
+    const Poly2Input in = read_poly2(input);
+    mesh2d::PlanarOptions po;
+    po.elements = opt.elements;
+    po.quads = opt.quads;
+    mesh2d::PlanarStats st;
+    const mesh2d::TriMesh2 m = mesh2d::mesh_planar(in, po, &st);
+    mesh2d::write_tri_vtu(m, opt.output);
+    if (!opt.stats.empty()) {
+      std::ofstream s(opt.stats);
+      if (!s) throw InputError(opt.stats + ": cannot write");
+      s << mesh2d::planar_stats_json(st) << '\n';
+    }
+    if (!opt.quiet)
+      out << opt.output << ": " << st.triangles << " triangles, " << st.quads << " quadrilaterals, " << st.nodes
+          << " nodes, angles " << st.min_angle_deg << " to " << st.max_angle_deg << " degrees, " << st.seconds_total << " s\n";
+    return 0;
+  }
   if (!opt.cells_only)
     throw InputError("tetrahedral meshing is not available in this version; --cells-only writes the convex cells");
   if (!ends_with(opt.output, ".poly"))

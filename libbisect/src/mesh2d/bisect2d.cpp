@@ -29,9 +29,9 @@ bool segment_inside(const std::vector<Vec2>& X, const std::vector<Index>& loop, 
     const Index a = loop[i], b = loop[(i + 1) % n];
     if (a == p || a == q || b == p || b == q) continue;
     if (proper_cross(X[p], X[q], X[a], X[b])) return false;
-    // a loop node on the segment
-    if (orient2d(X[p], X[q], X[a]) == 0 && (X[a] - X[p]).dot(X[a] - X[q]) < 0) return false;
   }
+  for (Index a : loop)  // a loop node on the segment (a spike along the loop's own edges)
+    if (a != p && a != q && orient2d(X[p], X[q], X[a]) == 0 && (X[a] - X[p]).dot(X[a] - X[q]) < 0) return false;
   for (std::size_t i = 0; i < n; ++i) {
     if (loop[i] != p) continue;
     const Vec2 &prev = X[loop[(i + n - 1) % n]], &v = X[p], &next = X[loop[(i + 1) % n]];
@@ -217,7 +217,40 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
       break;
     }
     if (split) continue;
-    if (!remove_vertex(X, w, tris)) throw MeshingError("recursive bisection: a region with no split and no removable vertex");
+    // 4.3.3: a domain of peculiarity. Lines from a boundary node to its next but one, the one
+    // cutting off the best triangle first, inside nodes near the line joining the split.
+    std::vector<std::pair<double, std::size_t>> ears;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index a = w.loop[(k + n - 1) % n], v = w.loop[k], b = w.loop[(k + 1) % n];
+      if (orient2d(X[a], X[v], X[b]) > 0) ears.push_back({min_angle_deg(X[a], X[v], X[b]), k});
+    }
+    std::sort(ears.rbegin(), ears.rend());
+    for (const auto& [angle, k] : ears) {
+      const std::size_t i = (k + n - 1) % n, j = (k + 1) % n;
+      const Vec2 p = X[w.loop[i]], q = X[w.loop[j]];
+      const double len = (q - p).norm();
+      if (len <= 0) continue;
+      const Vec2 u = (q - p) / len;
+      std::vector<std::pair<double, Index>> near;
+      for (Index v : w.inside) {
+        const Vec2 r = X[v] - p;
+        const double t = r.dot(u), dist = std::abs(u.x() * r.y() - u.y() * r.x());
+        if (t > 0 && t < len && dist < half_spacing) near.push_back({t, v});
+      }
+      std::sort(near.begin(), near.end());
+      std::vector<Index> via;
+      for (const auto& [t, v] : near) via.push_back(v);
+      Work a, b;
+      if (!split_along(X, w, i, j, via, &a, &b)) continue;
+      stack.push_back(std::move(a));
+      stack.push_back(std::move(b));
+      split = true;
+      break;
+    }
+    if (split) continue;
+    if (!remove_vertex(X, w, tris)) {
+      throw MeshingError("recursive bisection: a region with no split and no removable vertex");
+    }
     stack.push_back(std::move(w));
   }
 }

@@ -226,3 +226,21 @@ TEST(Cli, CellsOnlyRejectsACavityCrossingItsOuterBoundary) {
   EXPECT_NE(r.err.find("faces 2 and "), std::string::npos) << r.err;  // the cube's top face
   EXPECT_NE(r.err.find("intersect at"), std::string::npos) << r.err;
 }
+
+TEST(Cli, MeshesA2DInputIntoVtu) {
+  const fs::path out = scratch_dir() / "square.vtu", stats = scratch_dir() / "square.json";
+  const std::string in = "'" + std::string(BISECT_TEST_DATA) + "/square-subdomain-adjacent-square.poly2'";
+  CliResult r = run(in + " -o '" + out.string() + "' -n 800 --quads --stats '" + stats.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("quadrilaterals"), std::string::npos) << r.out;
+  EXPECT_NE(slurp(out).find("<UnstructuredGrid>"), std::string::npos);
+  const std::string s = slurp(stats);
+  for (const char* key : {"\"triangles\"", "\"quads\"", "\"min_angle\"", "\"times\""})
+    EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
+  r = run(in + " -o '" + out.string() + "' -n 0");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("-n needs a positive whole number"), std::string::npos) << r.err;
+  r = run(in + " -o '" + (scratch_dir() / "x.msh").string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("2D meshes are written as .vtu"), std::string::npos) << r.err;
+}
