@@ -5,6 +5,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "mesh2d/loop_geometry.hpp"
 #include "mesh2d/tri_quality.hpp"
 
 namespace bisect::mesh2d {
@@ -69,23 +70,11 @@ bool split_along(const std::vector<Vec2>& X, const Work& w, std::size_t i, std::
   b->loop.push_back(w.loop[i]);
   b->loop.insert(b->loop.end(), via.begin(), via.end());
   // the other inside nodes go to the part that holds them (exact crossing parity on loop a)
-  auto in_a = [&](const Vec2& p) {
-    bool in = false;
-    const std::size_t m = a->loop.size();
-    for (std::size_t k = 0; k < m; ++k) {
-      const Vec2 &u = X[a->loop[k]], &v = X[a->loop[(k + 1) % m]];
-      if ((u.y() > p.y()) != (v.y() > p.y())) {
-        const int o = orient2d(u, v, p);
-        if ((v.y() > u.y() ? o : -o) > 0) in = !in;
-      }
-    }
-    return in;
-  };
   for (Index p : w.inside) {
     if (std::find(via.begin(), via.end(), p) != via.end()) continue;
     for (std::size_t k = 0; k + 1 < path.size(); ++k)  // a node on the new boundary: no split here
       if (orient2d(X[path[k]], X[path[k + 1]], X[p]) == 0 && (X[p] - X[path[k]]).dot(X[p] - X[path[k + 1]]) <= 0) return false;
-    (in_a(X[p]) ? a : b)->inside.push_back(p);
+    (inside_loop(X, a->loop, X[p]) ? a : b)->inside.push_back(p);
   }
   // both parts must run counter-clockwise (a path leaving the polygon would turn one over)
   auto area2 = [&](const std::vector<Index>& l) {

@@ -5,6 +5,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "mesh2d/loop_geometry.hpp"
 
 namespace bisect::mesh2d {
 namespace {
@@ -70,18 +71,6 @@ double area2(const std::vector<Vec2>& X, const std::vector<Index>& l) {
     s += u.x() * v.y() - u.y() * v.x();
   }
   return s;
-}
-
-bool inside_loop(const std::vector<Vec2>& X, const std::vector<Index>& l, const Vec2& p) {
-  bool in = false;
-  for (std::size_t k = 0; k < l.size(); ++k) {
-    const Vec2 &u = X[l[k]], &v = X[l[(k + 1) % l.size()]];
-    if ((u.y() > p.y()) != (v.y() > p.y())) {
-      const int o = orient2d(u, v, p);
-      if ((v.y() > u.y() ? o : -o) > 0) in = !in;
-    }
-  }
-  return in;
 }
 
 // Splits `outer` with the hole `hole` inside it into two simple pieces by two separators.

@@ -46,10 +46,8 @@ TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarS
   st.seconds_nodes += since(t0);
   const auto t1 = Clock::now();
   for (std::size_t p = 0; p < pieces.size(); ++p) {
-    const std::size_t before = m.tris.size();
     bisection_triangulate(m.nodes, pieces[p].first, pieces[p].second, m.tris);
     m.tri_region.resize(m.tris.size(), piece_region[p]);
-    (void)before;
   }
   m.fixed.assign(m.nodes.size(), 0);
   for (std::size_t v = 0; v < boundary_nodes; ++v) m.fixed[v] = 1;  // input boundaries and interfaces

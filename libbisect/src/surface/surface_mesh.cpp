@@ -56,6 +56,13 @@ bool quad_of(const SurfaceMesh& m, const std::vector<EdgeSide>& sides, Quad* q) 
   return orient2d(m.uv[q->c], m.uv[q->a], m.uv[q->d]) > 0 && orient2d(m.uv[q->d], m.uv[q->b], m.uv[q->c]) > 0;
 }
 
+// The edge tables are made at a pass's start: whether the quad's triangles are still as they were.
+bool still_there(const SurfaceMesh& m, const Quad& q) {
+  auto has = [](const std::array<Index, 3>& t, Index v) { return std::find(t.begin(), t.end(), v) != t.end(); };
+  return has(m.tris[q.t1], q.a) && has(m.tris[q.t1], q.b) && has(m.tris[q.t1], q.c) && has(m.tris[q.t2], q.a) &&
+         has(m.tris[q.t2], q.b) && has(m.tris[q.t2], q.d);
+}
+
 void swap(SurfaceMesh& m, const Quad& q) {
   m.tris[q.t1] = {q.c, q.a, q.d};
   m.tris[q.t2] = {q.d, q.b, q.c};
@@ -131,11 +138,7 @@ std::size_t surface_delaunay_swaps(SurfaceMesh& m, int max_passes) {
     for (const auto& [e, sides] : edge_table(m)) {
       Quad q;
       if (!quad_of(m, sides, &q)) continue;
-      // the edge table is from the pass's start: skip edges a swap of this pass already changed
-      const auto& T1 = m.tris[q.t1];
-      if (std::find(T1.begin(), T1.end(), q.a) == T1.end() || std::find(T1.begin(), T1.end(), q.b) == T1.end()) continue;
-      const auto& T2 = m.tris[q.t2];
-      if (std::find(T2.begin(), T2.end(), q.d) == T2.end() || std::find(T2.begin(), T2.end(), q.a) == T2.end()) continue;
+      if (!still_there(m, q)) continue;  // a swap earlier in this pass changed it
       const bool violated = in_minimal_sphere(m.xyz[q.a], m.xyz[q.b], m.xyz[q.c], m.xyz[q.d]) ||
                             in_minimal_sphere(m.xyz[q.b], m.xyz[q.a], m.xyz[q.d], m.xyz[q.c]);
       // swap only into a pair that does not violate in turn, so that swaps cannot cycle
@@ -216,10 +219,7 @@ std::size_t surface_angle_swaps(SurfaceMesh& m, const ParametricSurface& s, doub
     for (const auto& [e, sides] : edge_table(m)) {
       Quad q;
       if (!quad_of(m, sides, &q)) continue;
-      const auto& T1 = m.tris[q.t1];
-      if (std::find(T1.begin(), T1.end(), q.a) == T1.end() || std::find(T1.begin(), T1.end(), q.b) == T1.end()) continue;
-      const auto& T2 = m.tris[q.t2];
-      if (std::find(T2.begin(), T2.end(), q.d) == T2.end() || std::find(T2.begin(), T2.end(), q.a) == T2.end()) continue;
+      if (!still_there(m, q)) continue;
       const double now = std::min(min_angle(m, q.a, q.b, q.c), min_angle(m, q.b, q.a, q.d));
       const double then = std::min(min_angle(m, q.c, q.a, q.d), min_angle(m, q.d, q.b, q.c));
       bool go = then > now + angle_tol;
