@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
@@ -85,7 +86,15 @@ bool split_along(const std::vector<Vec2>& X, const Work& w, std::size_t i, std::
     }
     return s2;
   };
-  if (area2(a->loop) <= 0 || area2(b->loop) <= 0) return false;
+  // and neither may be flat: a rounded area of collinear nodes can come out positive, so count
+  // exactly convex corners too (a polygon with area has three or more)
+  auto flat = [&](const std::vector<Index>& l) {
+    int convex = 0;
+    for (std::size_t k = 0; k < l.size() && convex < 3; ++k)
+      convex += orient2d(X[l[(k + l.size() - 1) % l.size()]], X[l[k]], X[l[(k + 1) % l.size()]]) > 0;
+    return convex < 3;
+  };
+  if (area2(a->loop) <= 0 || area2(b->loop) <= 0 || flat(a->loop) || flat(b->loop)) return false;
   return a->loop.size() >= 3 && b->loop.size() >= 3;
 }
 
@@ -113,23 +122,88 @@ bool remove_vertex(const std::vector<Vec2>& X, Work& w, std::vector<std::array<I
   return true;
 }
 
-// A triangle with nodes inside: join two corners to the inside node that makes the best triangle.
+// A triangle with nodes inside: join two corners to the inside node that makes the best triangle
+// holding no other inside node.
 bool split_triangle(const std::vector<Vec2>& X, Work& w, std::vector<std::array<Index, 3>>& tris) {
-  double best = -1;
-  int bk = -1;
-  Index bp = -1;
+  std::vector<std::tuple<double, int, Index>> cands;  // smallest angle, corner, node
   for (int k = 0; k < 3; ++k)
-    for (Index p : w.inside) {
-      const double ang = min_angle_deg(X[w.loop[k]], X[w.loop[(k + 1) % 3]], X[p]);
-      if (ang > best) best = ang, bk = k, bp = p;
+    for (Index p : w.inside)
+      if (orient2d(X[w.loop[k]], X[w.loop[(k + 1) % 3]], X[p]) > 0)
+        cands.emplace_back(min_angle_deg(X[w.loop[k]], X[w.loop[(k + 1) % 3]], X[p]), k, p);
+  std::sort(cands.rbegin(), cands.rend());
+  for (const auto& [angle, k, p] : cands) {
+    const Index a = w.loop[k], b = w.loop[(k + 1) % 3], c = w.loop[(k + 2) % 3];
+    bool empty = true;
+    for (Index q : w.inside)
+      if (q != p && orient2d(X[a], X[b], X[q]) >= 0 && orient2d(X[b], X[p], X[q]) >= 0 && orient2d(X[p], X[a], X[q]) >= 0) empty = false;
+    if (!empty) continue;
+    tris.push_back({a, b, p});
+    w.loop = {b, c, a, p};
+    w.inside.erase(std::find(w.inside.begin(), w.inside.end(), p));
+    return true;
+  }
+  return false;
+}
+
+// The last resort when neither a split line nor a vertex removal works (a long thin region whose
+// nodes all sit on lines, a triangle whose inside node is on a corner's line): cut one triangle
+// off a loop edge with the node that sees the edge under the largest angle, as a constrained
+// Delaunay triangulation would, which leaves the triangle empty. The rest is one or two loops.
+bool grow_from_edge(const std::vector<Vec2>& X, const Work& w, std::vector<std::array<Index, 3>>& tris, std::vector<Work>& stack) {
+  const std::size_t n = w.loop.size();
+  std::vector<std::pair<double, std::size_t>> edges;  // shortest edges first
+  for (std::size_t i = 0; i < n; ++i) edges.push_back({(X[w.loop[(i + 1) % n]] - X[w.loop[i]]).squaredNorm(), i});
+  std::sort(edges.begin(), edges.end());
+  for (const auto& [len2, i] : edges) {
+    const Index a = w.loop[i], b = w.loop[(i + 1) % n];
+    std::vector<std::pair<double, Index>> cands;  // angle a p b, node
+    auto consider = [&](Index p) {
+      if (p == a || p == b || orient2d(X[a], X[b], X[p]) <= 0) return;
+      const Vec2 u = X[a] - X[p], v = X[b] - X[p];
+      cands.push_back({std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)), p});
+    };
+    for (Index p : w.loop) consider(p);
+    for (Index p : w.inside) consider(p);
+    std::sort(cands.rbegin(), cands.rend());
+    for (const auto& [angle, p] : cands) {
+      if (!segment_inside(X, w.loop, a, p) || !segment_inside(X, w.loop, p, b)) continue;
+      bool empty = true;  // nothing inside the triangle or on its two new sides
+      auto blocks = [&](Index q) {
+        if (q == a || q == b || q == p) return false;
+        return orient2d(X[a], X[b], X[q]) > 0 && orient2d(X[b], X[p], X[q]) >= 0 && orient2d(X[p], X[a], X[q]) >= 0;
+      };
+      for (Index q : w.loop) empty = empty && !blocks(q);
+      for (Index q : w.inside) empty = empty && !blocks(q);
+      if (!empty) continue;
+      tris.push_back({a, b, p});
+      const auto at = std::find(w.loop.begin(), w.loop.end(), p);
+      if (at == w.loop.end()) {  // an inside node: it joins the loop between a and b
+        Work rest;
+        rest.loop = w.loop;
+        rest.loop.insert(rest.loop.begin() + static_cast<std::ptrdiff_t>(i + 1), p);
+        for (Index q : w.inside)
+          if (q != p) rest.inside.push_back(q);
+        stack.push_back(std::move(rest));
+        return true;
+      }
+      // a loop node: b .. p and p .. a remain, each with the inside nodes it holds
+      const std::size_t k = static_cast<std::size_t>(at - w.loop.begin());
+      Work one, two;
+      for (std::size_t j = (i + 1) % n;; j = (j + 1) % n) {
+        one.loop.push_back(w.loop[j]);
+        if (j == k) break;
+      }
+      for (std::size_t j = k;; j = (j + 1) % n) {
+        two.loop.push_back(w.loop[j]);
+        if (j == i) break;
+      }
+      for (Index q : w.inside) (one.loop.size() >= 3 && inside_loop(X, one.loop, X[q]) ? one : two).inside.push_back(q);
+      if (one.loop.size() >= 3) stack.push_back(std::move(one));
+      if (two.loop.size() >= 3) stack.push_back(std::move(two));
+      return true;
     }
-  if (bk < 0) return false;
-  const Index a = w.loop[bk], b = w.loop[(bk + 1) % 3], c = w.loop[(bk + 2) % 3];
-  if (orient2d(X[a], X[b], X[bp]) <= 0) return false;
-  tris.push_back({a, b, bp});
-  w.loop = {b, c, a, bp};
-  w.inside.erase(std::find(w.inside.begin(), w.inside.end(), bp));
-  return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -148,8 +222,11 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
       continue;
     }
     if (n == 3) {
-      if (!split_triangle(X, w, tris)) throw MeshingError("recursive bisection: a triangle with nodes inside cannot be split");
-      stack.push_back(std::move(w));
+      if (split_triangle(X, w, tris)) {
+        stack.push_back(std::move(w));
+      } else if (!grow_from_edge(X, w, tris, stack)) {
+        throw MeshingError("recursive bisection: a triangle with nodes inside cannot be split");
+      }
       continue;
     }
     // 4.3.1: candidate lines between nearly opposite boundary nodes, the best weight wins
@@ -237,10 +314,11 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
       break;
     }
     if (split) continue;
-    if (!remove_vertex(X, w, tris)) {
+    if (remove_vertex(X, w, tris)) {
+      stack.push_back(std::move(w));
+    } else if (!grow_from_edge(X, w, tris, stack)) {
       throw MeshingError("recursive bisection: a region with no split and no removable vertex");
     }
-    stack.push_back(std::move(w));
   }
 }
 

@@ -39,6 +39,25 @@ bool clear(const std::vector<Vec2>& X, const std::vector<std::vector<Index>>& lo
   return true;
 }
 
+// Whether the segment p q passes closer than `gap` to a loop node other than its ends. `clear`
+// lets such a separator through, but it leaves a sliver piece between itself and that node (a
+// hole cut grazing the hole's own corner made 0.4 degree pieces on a square with holes).
+bool passes_near(const std::vector<Vec2>& X, const std::vector<std::vector<Index>>& loops, Index p, Index q, double gap) {
+  const Vec2 a = X[p], d = X[q] - X[p];
+  const double len2 = d.squaredNorm();
+  for (const auto& l : loops)
+    for (Index v : l) {
+      if (v == p || v == q) continue;
+      const Vec2 r = X[v] - a;
+      const double t = r.dot(d);
+      if (t <= 0 || t >= len2) continue;
+      if (std::abs(d.x() * r.y() - d.y() * r.x()) < gap * std::sqrt(len2)) return true;
+    }
+  return false;
+}
+
+const double kMinSeparatorAngle = 20 * M_PI / 180;
+
 double angle_between(const Vec2& u, const Vec2& v) {  // counter-clockwise from u to v, in [0, 2 pi)
   double a = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
   return a < 0 ? a + 2 * M_PI : a;
@@ -73,9 +92,11 @@ double area2(const std::vector<Vec2>& X, const std::vector<Index>& l) {
   return s;
 }
 
-// Splits `outer` with the hole `hole` inside it into two simple pieces by two separators.
+// Splits `outer` with the hole `hole` inside it into two simple pieces by two separators. When
+// `strict`, a separator must meet both loops at 20 degrees or more and pass no other node closer
+// than h / 4, so that the cut makes no sliver.
 bool cut_hole(std::vector<Vec2>& X, const std::vector<Index>& outer, const std::vector<Index>& hole,
-              const std::vector<std::vector<Index>>& others, double h, std::vector<Index>* a, std::vector<Index>* b) {
+              const std::vector<std::vector<Index>>& others, double h, bool strict, std::vector<Index>* a, std::vector<Index>* b) {
   std::vector<std::vector<Index>> all = others;
   all.push_back(outer);
   all.push_back(hole);
@@ -96,6 +117,11 @@ bool cut_hole(std::vector<Vec2>& X, const std::vector<Index>& outer, const std::
       if (!in_angle(X[hole[(hi + nh - 1) % nh]], X[hv], X[hole[(hi + 1) % nh]], X[ov])) continue;
       if (!in_angle(X[outer[(oi + no - 1) % no]], X[ov], X[outer[(oi + 1) % no]], X[hv])) continue;
       if (!clear(X, all, hv, ov)) continue;
+      if (strict) {
+        const auto [h1, h2] = split_angles(X, hole, hi, X[ov]);
+        const auto [o1, o2] = split_angles(X, outer, oi, X[hv]);
+        if (std::min({h1, h2, o1, o2}) < kMinSeparatorAngle || passes_near(X, all, hv, ov, h / 4)) continue;
+      }
       seps.push_back({order[c].first, hi, oi});
       break;
     }
@@ -138,6 +164,33 @@ bool cut_hole(std::vector<Vec2>& X, const std::vector<Index>& outer, const std::
   return false;
 }
 
+// The loop node that the separator from reflex vertex `reflex` should go to: inside the loop,
+// splitting the reflex angle into two of at most 180 degrees, the largest smallest angle at
+// both ends; one passing near another node only when there is nothing else. n when none.
+std::size_t best_separator(const std::vector<Vec2>& X, const std::vector<Index>& l, std::size_t reflex, double h) {
+  const std::size_t n = l.size();
+  double best = -1, best_grazing = -1;
+  std::size_t bw = n, grazing = n;
+  for (std::size_t w = 0; w < n; ++w) {
+    if (w == reflex || w == (reflex + 1) % n || (w + 1) % n == reflex) continue;
+    const Vec2 q = X[l[w]];
+    const auto [a1, a2] = split_angles(X, l, reflex, q);
+    if (a1 > M_PI || a2 > M_PI) continue;  // does not resolve the reflex angle
+    const auto [b1, b2] = split_angles(X, l, w, X[l[reflex]]);
+    if (b1 <= 0 || b2 <= 0 || b1 + b2 > 2 * M_PI - 1e-12) continue;
+    const double worst = std::min({a1, a2, b1, b2});
+    if (worst <= best) continue;
+    if (!clear(X, {l}, l[reflex], l[w])) continue;
+    if (!in_angle(X[l[(w + n - 1) % n]], q, X[l[(w + 1) % n]], X[l[reflex]])) continue;
+    if (passes_near(X, {l}, l[reflex], l[w], h / 4)) {
+      if (worst > best_grazing) best_grazing = worst, grazing = w;
+      continue;
+    }
+    best = worst, bw = w;
+  }
+  return bw == n ? grazing : bw;
+}
+
 }  // namespace
 
 std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::vector<std::vector<Index>>& loops, double h) {
@@ -151,7 +204,7 @@ std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::v
     if (host == simple.size()) throw MeshingError("convex decomposition: a hole lies in no piece");
     std::vector<std::vector<Index>> others(loops.begin() + static_cast<std::ptrdiff_t>(hi) + 1, loops.end());
     std::vector<Index> a, b;
-    if (!cut_hole(X, simple[host], hole, others, h, &a, &b))
+    if (!cut_hole(X, simple[host], hole, others, h, true, &a, &b) && !cut_hole(X, simple[host], hole, others, h, false, &a, &b))
       throw MeshingError("convex decomposition: no pair of cut edges joins a hole to its boundary");
     simple[host] = std::move(a);
     simple.push_back(std::move(b));
@@ -162,33 +215,21 @@ std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::v
     std::vector<Index> l = std::move(simple.back());
     simple.pop_back();
     const std::size_t n = l.size();
-    std::size_t reflex = n;
-    // reflex beyond round-off: separator nodes are interpolated, so a straight run of them can
-    // turn by 1e-16 either way, which is no corner to resolve
-    for (std::size_t k = 0; k < n && reflex == n; ++k) {
+    // the first reflex vertex that some separator resolves; a piece none of whose reflex
+    // vertices can be resolved (a neck narrower than any separator's angle) stays as it is
+    std::size_t reflex = n, bw = n;
+    for (std::size_t k = 0; k < n && bw == n; ++k) {
+      // reflex beyond round-off: separator nodes are interpolated, so a straight run of them can
+      // turn by 1e-16 either way, which is no corner to resolve
       const Vec2 a = X[l[k]] - X[l[(k + n - 1) % n]], b = X[l[(k + 1) % n]] - X[l[k]];
-      if (a.x() * b.y() - a.y() * b.x() < -1e-9 * a.norm() * b.norm()) reflex = k;
+      if (a.x() * b.y() - a.y() * b.x() >= -1e-9 * a.norm() * b.norm()) continue;
+      reflex = k;
+      bw = best_separator(X, l, k, h);
     }
-    if (reflex == n) {
+    if (bw == n) {
       out.push_back(std::move(l));
       continue;
     }
-    double best = -1;
-    std::size_t bw = n;
-    for (std::size_t w = 0; w < n; ++w) {
-      if (w == reflex || w == (reflex + 1) % n || (w + 1) % n == reflex) continue;
-      const Vec2 q = X[l[w]];
-      const auto [a1, a2] = split_angles(X, l, reflex, q);
-      if (a1 > M_PI || a2 > M_PI) continue;  // does not resolve the reflex angle
-      const auto [b1, b2] = split_angles(X, l, w, X[l[reflex]]);
-      if (b1 <= 0 || b2 <= 0 || b1 + b2 > 2 * M_PI - 1e-12) continue;
-      const double worst = std::min({a1, a2, b1, b2});
-      if (worst <= best) continue;
-      if (!clear(X, {l}, l[reflex], l[w])) continue;
-      if (!in_angle(X[l[(w + n - 1) % n]], q, X[l[(w + 1) % n]], X[l[reflex]])) continue;
-      best = worst, bw = w;
-    }
-    if (bw == n) throw MeshingError("convex decomposition: no separator resolves a reflex vertex");
     const std::vector<Index> mid = separator_nodes(X, l[reflex], l[bw], h);
     std::vector<Index> p1, p2;
     for (std::size_t k = reflex; k != bw; k = (k + 1) % n) p1.push_back(l[k]);

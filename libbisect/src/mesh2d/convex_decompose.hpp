@@ -12,7 +12,10 @@
 namespace bisect::mesh2d {
 
 // loops: loops[0] the outer boundary counter-clockwise, the others holes clockwise, with their
-// boundary nodes. New separator nodes are appended to `nodes`. Returns counter-clockwise loops.
+// boundary nodes. New separator nodes are appended to `nodes`. Returns counter-clockwise loops,
+// convex except where a reflex vertex has no separator at all (a neck narrower than the angles
+// allow, seen on faces of CSG unions): that piece is returned as it is, and the shrinking nodes,
+// which lie inside the moved half-planes of all its edges, still fall inside it.
 std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& nodes, const std::vector<std::vector<Index>>& loops, double h);
 
 }  // namespace bisect::mesh2d

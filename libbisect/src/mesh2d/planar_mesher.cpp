@@ -6,14 +6,10 @@
 #include <sstream>
 
 #include "bisect/errors.hpp"
-#include "mesh2d/bisect2d.hpp"
-#include "mesh2d/convex_decompose.hpp"
+#include "mesh2d/fill_region.hpp"
 #include "mesh2d/prep_regions.hpp"
 #include "mesh2d/quads.hpp"
-#include "mesh2d/shrink_nodes.hpp"
-#include "mesh2d/smooth.hpp"
 #include "mesh2d/spacing.hpp"
-#include "mesh2d/swap.hpp"
 #include "mesh2d/tri_quality.hpp"
 
 namespace bisect::mesh2d {
@@ -22,36 +18,22 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// One meshing at spacing h: the boundary grid, then each region filled.
 TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarStats& st) {
   const auto t0 = Clock::now();
   BoundaryGrid g = discretise_boundaries(d, h);
+  st.seconds_nodes += since(t0);
   TriMesh2 m;
   m.nodes = g.nodes;
   const std::size_t boundary_nodes = g.nodes.size();
-  std::vector<std::pair<std::vector<Index>, std::vector<Index>>> pieces;  // loop, inside
-  std::vector<Index> piece_region;
+  st.convex_pieces = 0;
+  FillTimes times;
   for (std::size_t r = 0; r < d.regions.size(); ++r)
-    for (auto& loop : convex_pieces(m.nodes, g.loops[r], h)) {
-      std::vector<Vec2> poly;
-      for (Index v : loop) poly.push_back(m.nodes[v]);
-      std::vector<Index> inside;
-      for (const Vec2& p : shrink_nodes(poly, h, element_area)) {
-        m.nodes.push_back(p);
-        inside.push_back(static_cast<Index>(m.nodes.size() - 1));
-      }
-      pieces.push_back({std::move(loop), std::move(inside)});
-      piece_region.push_back(static_cast<Index>(r));
-    }
-  st.convex_pieces = static_cast<std::int64_t>(pieces.size());
-  st.seconds_nodes += since(t0);
-  const auto t1 = Clock::now();
-  for (std::size_t p = 0; p < pieces.size(); ++p) {
-    bisection_triangulate(m.nodes, pieces[p].first, pieces[p].second, m.tris);
-    m.tri_region.resize(m.tris.size(), piece_region[p]);
-  }
+    st.convex_pieces += fill_region(m, g.loops[r], h, element_area, static_cast<Index>(r), &times);
   m.fixed.assign(m.nodes.size(), 0);
   for (std::size_t v = 0; v < boundary_nodes; ++v) m.fixed[v] = 1;  // input boundaries and interfaces
-  st.seconds_triangulate += since(t1);
+  st.seconds_nodes += times.nodes;
+  st.seconds_triangulate += times.triangulate;
   return m;
 }
 
@@ -77,13 +59,7 @@ TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats
     if (miss(again) < miss(m)) m = std::move(again);
   }
   const auto t2 = Clock::now();
-  if (opt.optimize) {  // swaps and smoothing in turn (4.4): each opens moves for the other
-    for (int round = 0; round < 3; ++round) {
-      swap_edges(m);
-      smooth_laplace(m, {3});
-    }
-    swap_edges(m);
-  }
+  if (opt.optimize) optimize_planar(m);
   if (opt.quads) make_quads(m);
   st.seconds_optimize = since(t2);
   st.nodes = static_cast<std::int64_t>(m.nodes.size());

@@ -65,6 +65,36 @@ std::vector<Vec2> shrink_nodes(const std::vector<Vec2>& polygon, double h, doubl
       const Vec2 inward(-d.y(), d.x());
       layer = clip_left(layer, a + k * h * inward, d);
     }
+    // a layer thinner than h / 2 (width about 2 area / perimeter) would put its two long sides'
+    // nodes that close together: its nodes go along its middle line instead (through the
+    // centroid along the principal axis of its corners, clipped to it), and it is the last (before
+    // tidying, whose merging of close corners would flatten it to one edge)
+    double perimeter = 0;
+    Vec2 centre = Vec2::Zero();
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+      perimeter += (layer[(i + 1) % layer.size()] - layer[i]).norm();
+      centre += layer[i] / static_cast<double>(layer.size());
+    }
+    if (layer.size() >= 3 && area(layer) > 1e-12 * h * h && 2 * area(layer) / perimeter < 0.5 * h) {
+      double sxx = 0, sxy = 0, syy = 0;
+      for (const Vec2& q : layer) sxx += (q - centre).x() * (q - centre).x(), sxy += (q - centre).x() * (q - centre).y(), syy += (q - centre).y() * (q - centre).y();
+      const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+      const Vec2 u(std::cos(angle), std::sin(angle));
+      double t0 = -1e300, t1 = 1e300;  // the line centre + t u inside every edge's half-plane
+      for (std::size_t i = 0; i < layer.size(); ++i) {
+        const Vec2 a = layer[i], d = layer[(i + 1) % layer.size()] - a;
+        const double side = cross(d, centre - a), rate = cross(d, u);  // left of the edge: inside
+        if (std::abs(rate) < 1e-300) continue;
+        const double t = -side / rate;
+        if (rate > 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+      }
+      if (t1 < t0) t0 = t1 = 0;
+      const int steps = static_cast<int>(std::lround((t1 - t0) / h));
+      if (steps == 0) nodes.push_back(centre + 0.5 * (t0 + t1) * u);
+      for (int s = 0; s <= steps && steps > 0; ++s) nodes.push_back(centre + (t0 + (t1 - t0) * s / steps) * u);
+      break;
+    }
     if (layer.size() >= 3 && area(layer) > 1e-12 * h * h) layer = tidy(layer, h);
     if (layer.size() < 3 || area(layer) <= 1e-12 * h * h) {
       // a point or a segment is left: one node in the middle when there is room for it

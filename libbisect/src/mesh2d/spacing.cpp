@@ -12,6 +12,46 @@ double element_spacing(double area, std::int64_t elements) {
   return std::sqrt(4.0 * (area / static_cast<double>(elements)) / std::sqrt(3.0));
 }
 
+double edge_spacing_at(double x, double len, double sa, double sb, double h) {
+  return std::min({h, sa + kSpacingGrowth * x, sb + kSpacingGrowth * (len - x)});
+}
+
+std::vector<double> graded_edge_fractions(double len, double sa, double sb, double h) {
+  // s(x) = min(h, sa + g x, sb + g (len - x)) is linear between these breakpoints; the integral
+  // of 1 / s and its inverse are exact on each piece
+  const double g = kSpacingGrowth;
+  std::vector<double> xs{0, len, (h - sa) / g, len - (h - sb) / g, (sb - sa + g * len) / (2 * g)};
+  for (double& x : xs) x = std::clamp(x, 0.0, len);
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  struct Piece {
+    double x0, c, m, integral;  // s = c + m x on [x0, x0 + ...)
+  };
+  std::vector<Piece> pieces;
+  double total = 0;
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    const double x0 = xs[k], x1 = xs[k + 1], xm = 0.5 * (x0 + x1), sm = edge_spacing_at(xm, len, sa, sb, h);
+    const double m = sm == h ? 0 : (sm == sa + g * xm ? g : -g);
+    const double c = sm - m * xm;
+    const double integral = m == 0 ? (x1 - x0) / c : std::log((c + m * x1) / (c + m * x0)) / m;
+    pieces.push_back({x0, c, m, integral});
+    total += integral;
+  }
+  const int n = std::max(1, static_cast<int>(std::lround(total)));
+  std::vector<double> out;
+  std::size_t p = 0;
+  double before = 0;  // integral up to pieces[p].x0
+  for (int k = 1; k < n; ++k) {
+    const double target = total * k / n;
+    while (p + 1 < pieces.size() && before + pieces[p].integral < target) before += pieces[p++].integral;
+    const Piece& q = pieces[p];
+    const double t = target - before;
+    const double x = q.m == 0 ? q.x0 + t * q.c : ((q.c + q.m * q.x0) * std::exp(q.m * t) - q.c) / q.m;
+    out.push_back(std::clamp(x, 0.0, len) / len);
+  }
+  return out;
+}
+
 BoundaryGrid discretise_boundaries(const PlanarDomain& d, double h) {
   BoundaryGrid g;
   g.nodes = d.nodes;
@@ -31,18 +71,12 @@ BoundaryGrid discretise_boundaries(const PlanarDomain& d, double h) {
     auto it = done.find({lo, hi});
     if (it == done.end()) {
       const Vec2 p = d.nodes[lo], q = d.nodes[hi];
-      const double len = (q - p).norm(), sa = g.spacing[lo], sb = g.spacing[hi];
-      // integral of ds / (sa + (sb - sa) s / len) over the edge
-      const double steps = std::abs(sb - sa) < 1e-12 * sa ? len / sa : len * std::log(sb / sa) / (sb - sa);
-      const int n = std::max(1, static_cast<int>(std::lround(steps)));
+      const double sa = g.spacing[lo], sb = g.spacing[hi];
       std::vector<Index> ids;
-      for (int k = 1; k < n; ++k) {
-        // the s where the integral reaches k / n of its total
-        const double target = steps * k / n;
-        const double s = std::abs(sb - sa) < 1e-12 * sa ? target * sa
-                                                        : (sa * (std::exp(target * (sb - sa) / len) - 1)) * len / (sb - sa);
-        g.nodes.push_back(p + (q - p) * (s / len));
-        g.spacing.push_back(sa + (sb - sa) * s / len);
+      const double len = (q - p).norm();
+      for (double f : graded_edge_fractions(len, sa, sb, h)) {
+        g.nodes.push_back(p + (q - p) * f);
+        g.spacing.push_back(edge_spacing_at(f * len, len, sa, sb, h));
         ids.push_back(static_cast<Index>(g.nodes.size() - 1));
       }
       it = done.emplace(std::make_pair(lo, hi), ids).first;

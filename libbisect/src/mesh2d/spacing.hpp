@@ -3,8 +3,8 @@
 // The spacing is the side of the equilateral triangle whose area is the domain's area over the
 // required number of elements: h = sqrt(4 A_e / sqrt(3)). Each input vertex carries its own
 // spacing, no larger than h nor than its shortest edge, so fine boundary segments grade the grid;
-// along an edge the spacing runs linearly between its ends, and nodes are put at equal steps of
-// the integral of 1 / spacing. Every edge is discretised once, so regions sharing it conform.
+// along an edge the spacing grows away from each end at a bounded rate up to h, and nodes are put
+// at equal steps of the integral of 1 / spacing. Every edge is discretised once, so regions sharing it conform.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -16,6 +16,19 @@
 namespace bisect::mesh2d {
 
 double element_spacing(double area, std::int64_t elements);
+
+// How fast the spacing may grow away from a fine node: per unit length, so neighbouring
+// segments differ by about this fraction. A linear blend between the ends would keep a long
+// edge between two short ones fine all along (thousands of nodes on a long STL edge).
+inline constexpr double kSpacingGrowth = 0.3;
+
+// The spacing wanted at distance x along an edge of length len whose ends want sa and sb (both
+// at most h): min(h, sa + growth x, sb + growth (len - x)).
+double edge_spacing_at(double x, double len, double sa, double sb, double h);
+
+// The inner nodes of that edge, as fractions of the way from the sa end: equal steps of the
+// integral of 1 / spacing. Empty when one step covers the edge.
+std::vector<double> graded_edge_fractions(double len, double sa, double sb, double h);
 
 struct BoundaryGrid {
   std::vector<Vec2> nodes;                           // input nodes first, then edge nodes

@@ -105,6 +105,24 @@ TEST(PlanarMesher, LShapesHolesAndACoastline) {
   }
 }
 
+// The benchmark's square with four holes at the sizes where a hole cut grazing the hole's own
+// corner (1e5) and a shrinking layer thinner than h / 2 (5,000) once made 12 and 19 degree angles.
+TEST(PlanarMesher, SquareWithFourHolesKeepsTwentyDegrees) {
+  std::ostringstream s;
+  s << "1000\n20 5\n4 -4 -4 -4 -4\n0 0\n4 0\n4 4\n0 4\n";
+  for (const double x : {0.6, 2.6})
+    for (const double y : {0.6, 2.6}) s << x << ' ' << y << '\n' << x + 0.8 << ' ' << y << '\n' << x + 0.8 << ' ' << y + 0.8 << '\n' << x << ' ' << y + 0.8 << '\n';
+  s << "1 2 3 4\n5 6 7 8\n9 10 11 12\n13 14 15 16\n17 18 19 20\n";
+  const Poly2Input in = poly2(s.str());
+  for (std::int64_t n : {4000, 5000, 12000, 100000}) {
+    PlanarStats st;
+    const TriMesh2 m = mesh_planar(in, {n}, &st);
+    expect_valid(m, 16 - 4 * 0.64);
+    EXPECT_NEAR(static_cast<double>(m.tris.size()), static_cast<double>(n), 0.15 * n);
+    EXPECT_GE(st.min_angle_deg, 20.0) << n;
+  }
+}
+
 TEST(PlanarMesher, QuadsAndVtu) {
   const Poly2Input in = read_poly2(std::string(BISECT_TEST_DATA) + "/square-hole-adjacent-square.poly2");
   PlanarOptions opt;

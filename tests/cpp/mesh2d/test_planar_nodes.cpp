@@ -83,6 +83,38 @@ TEST(PlanarSpacing, GradedFromAShortEdge) {
   EXPECT_LT(last, 1.3);
 }
 
+TEST(PlanarSpacing, LongEdgeBetweenTwoFineEndsCoarsensInTheMiddle) {
+  // 0.01 at both ends of a 50-long edge, h = 2: the spacing grows from each end at a bounded
+  // rate to h, so the edge gets tens of nodes, not the 5,000 a linear blend would give
+  const std::vector<double> f = graded_edge_fractions(50, 0.01, 0.01, 2);
+  EXPECT_GT(f.size(), 25u);
+  EXPECT_LT(f.size(), 80u);
+  double longest = 0;
+  for (std::size_t k = 0; k <= f.size(); ++k) {
+    const double a = k == 0 ? 0 : f[k - 1], b = k == f.size() ? 1 : f[k];
+    ASSERT_GT(b, a);
+    const double seg = 50 * (b - a), mid = 50 * (a + b) / 2;
+    longest = std::max(longest, seg);
+    // each segment near the spacing wanted at its middle
+    EXPECT_NEAR(seg / edge_spacing_at(mid, 50, 0.01, 0.01, 2), 1.0, 0.25) << k;
+  }
+  EXPECT_NEAR(longest, 2.0, 0.3);
+  // and an even edge gets even steps
+  const std::vector<double> even = graded_edge_fractions(10, 1, 1, 1);
+  ASSERT_EQ(even.size(), 9u);
+  for (std::size_t k = 0; k < even.size(); ++k) EXPECT_NEAR(even[k], (k + 1) / 10.0, 1e-12);
+}
+
+TEST(ShrinkNodes, ThinLastLayerBecomesOneRow) {
+  // a 10 x 2.4 rectangle at h = 1: layer 1 is 8 x 0.4, thinner than h / 2, so its nodes go on
+  // its long axis instead of on two rows 0.4 apart
+  const std::vector<Vec2> rect = {{0, 0}, {10, 0}, {10, 2.4}, {0, 2.4}};
+  const std::vector<Vec2> nodes = shrink_nodes(rect, 1.0, std::sqrt(3.0) / 4);
+  ASSERT_FALSE(nodes.empty());
+  for (const Vec2& p : nodes) EXPECT_NEAR(p.y(), 1.2, 1e-9);
+  EXPECT_GT(min_distance(nodes), 0.9);
+}
+
 TEST(ShrinkNodes, SquareGetsEvenlySpacedNodesInside) {
   const std::vector<Vec2> square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const double h = 1.0, ae = std::sqrt(3.0) / 4;

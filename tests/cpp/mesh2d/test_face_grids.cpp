@@ -1,0 +1,188 @@
+// Face grids of polyhedral models (thesis 5.2): every face meshed in its own plane, every edge
+// discretised once, so that the grids of a region's faces (or of a convex cell's faces) close up
+// into one conforming triangulated surface; faces with holes keep them open.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+
+#include "bisect/errors.hpp"
+#include "bisect/io.hpp"
+#include "bisect/polyhedral_model.hpp"
+#include "mesh2d/face_grids.hpp"
+#include "generated_solids.hpp"
+#include "poly_shapes.hpp"
+
+namespace bisect::mesh2d {
+namespace {
+
+double tri_area(const FaceGrids& g, const std::array<Index, 3>& t) {
+  return 0.5 * (g.nodes[t[1]] - g.nodes[t[0]]).cross(g.nodes[t[2]] - g.nodes[t[0]]).norm();
+}
+
+// The faces (with their outward flags) form a closed conforming surface: oriented outwards,
+// every directed triangle edge occurs exactly once and its reverse exactly once.
+void expect_closed(const FaceGrids& g, const PolyhedralModel& m, const std::vector<Index>& faces, const std::vector<char>& outward,
+                   const std::string& what) {
+  std::map<std::pair<Index, Index>, int> directed;
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    for (const auto& t : g.face_tris[faces[k]]) {
+      const std::array<Index, 3> o = outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]};
+      for (int e = 0; e < 3; ++e) ++directed[{o[e], o[(e + 1) % 3]}];
+    }
+  std::size_t bad = 0;
+  for (const auto& [e, n] : directed) {
+    const auto rev = directed.find({e.second, e.first});
+    if (n != 1 || rev == directed.end() || rev->second != 1) ++bad;
+  }
+  EXPECT_EQ(bad, 0u) << what << ": edges used other than once each way";
+  (void)m;
+}
+
+// Each face: triangles counter-clockwise around its normal, lying in its plane, covering its area.
+void expect_faces_covered(const FaceGrids& g, const PolyhedralModel& m) {
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (!m.faces[f].alive) {
+      EXPECT_TRUE(g.face_tris[f].empty());
+      continue;
+    }
+    double area = 0;
+    for (const auto& t : g.face_tris[f]) {
+      const Vec3 n = (g.nodes[t[1]] - g.nodes[t[0]]).cross(g.nodes[t[2]] - g.nodes[t[0]]);
+      EXPECT_GT(n.dot(m.faces[f].normal), 0) << "face " << f;
+      for (Index v : t) EXPECT_NEAR(m.faces[f].normal.dot(g.nodes[v]), m.faces[f].offset, 1e-9 * m.size) << "face " << f;
+      area += tri_area(g, t);
+    }
+    EXPECT_NEAR(area, m.face_area(static_cast<Index>(f)), 1e-10 * m.size * m.size) << "face " << f;
+  }
+}
+
+void expect_regions_closed(const FaceGrids& g, const PolyhedralModel& m) {
+  for (std::size_t r = 0; r < m.regions.size(); ++r) {
+    std::vector<Index> faces;
+    std::vector<char> outward;
+    for (Index f : m.live_faces(static_cast<Index>(r))) {
+      faces.push_back(f);
+      outward.push_back(m.faces[f].back == static_cast<Index>(r));  // the normal leaves the region
+    }
+    expect_closed(g, m, faces, outward, "region " + std::to_string(r));
+  }
+}
+
+TEST(FaceGrids, CubeAtRequestedCount) {
+  const PolyhedralModel m = prepare_model(test::poly(test::unit_cube()));
+  for (std::int64_t n : {24, 600, 6000}) {
+    FaceGridOptions opt;
+    opt.elements = n;
+    const FaceGrids g = mesh_faces(m, opt);
+    EXPECT_NEAR(static_cast<double>(g.triangles), static_cast<double>(n), 0.15 * n) << n;
+    EXPECT_GE(g.min_angle_deg, 20.0) << n;
+    expect_faces_covered(g, m);
+    expect_regions_closed(g, m);
+    // every edge of the cube carries the same number of inner nodes (its two faces share them)
+    for (const auto& [e, inner] : g.edge_nodes)
+      EXPECT_NEAR(static_cast<double>(inner.size() + 1), 1 / g.h, 1.0) << e.first << "-" << e.second;
+  }
+}
+
+TEST(FaceGrids, FaceWithHoleAndShortEdgesGrade) {
+  // the re-entrant box (thesis 6.13, example 2): its top face has the pocket's mouth as a hole
+  const PolyhedralModel m = prepare_model(read_poly(std::string(BISECT_TEST_DATA) + "/reentry-box.poly"));
+  FaceGridOptions opt;
+  opt.size = 0.1;
+  const FaceGrids g = mesh_faces(m, opt);
+  expect_faces_covered(g, m);
+  expect_regions_closed(g, m);
+  EXPECT_GE(g.min_angle_deg, 20.0);
+  // no triangle of the top face (z = 1) covers the mouth of the pocket
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    if (m.faces[f].loops.size() < 2) continue;
+    for (const auto& t : g.face_tris[f]) {
+      const Vec3 c = (g.nodes[t[0]] + g.nodes[t[1]] + g.nodes[t[2]]) / 3;
+      EXPECT_FALSE(c.x() > 0.25 && c.x() < 0.75 && c.y() > 0.25 && c.y() < 0.75) << "a triangle in the hole";
+    }
+  }
+}
+
+TEST(FaceGrids, InterfaceSharedByBothRegions) {
+  // the thesis's cube with a cavity beside a second cube: the common face is meshed once
+  const PolyhedralModel m = prepare_model(read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly"));
+  FaceGridOptions opt;
+  opt.elements = 3000;
+  const FaceGrids g = mesh_faces(m, opt);
+  expect_faces_covered(g, m);
+  expect_regions_closed(g, m);
+  std::size_t interfaces = 0;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) interfaces += m.faces[f].alive && m.faces[f].front >= 0 && m.faces[f].back >= 0;
+  EXPECT_GE(interfaces, 1u);
+}
+
+TEST(FaceGrids, EveryConvexCellOfADecompositionIsClosed) {
+  // the grids the 3D generator fills: per cell, its faces' grids close up, cut faces included
+  for (const std::string& text : {test::l_prism(), std::string()}) {
+    const PolyInput in = text.empty() ? read_poly(std::string(BISECT_TEST_DATA) + "/reentry-box.poly") : test::poly(text);
+    const Decomposition d = decompose(in);
+    FaceGridOptions opt;
+    opt.elements = 4000;
+    const FaceGrids g = mesh_faces(d.model, opt);
+    expect_faces_covered(g, d.model);
+    for (std::size_t c = 0; c < d.cells.size(); ++c) expect_closed(g, d.model, d.cells[c].faces, d.cells[c].outward, "cell " + std::to_string(c));
+    EXPECT_GE(g.min_angle_deg, 20.0) << (text.empty() ? "reentry box" : "L prism");
+  }
+}
+
+// Random CSG solids (unions of boxes and rotated prisms, some hollow), decomposed: the grids of
+// every cell close up. BISECT_RANDOM_SOLIDS overrides the count (default 200).
+TEST(FaceGrids, RandomCsgSolidsGiveClosedCellGrids) {
+  const char* env = std::getenv("BISECT_RANDOM_SOLIDS");
+  const int n = env ? std::atoi(env) : 200;
+  int meshed = 0, skipped = 0;
+  for (int seed = 1; seed <= n; ++seed) {
+    std::string what;
+    const PolyInput in = testing::random_csg_polyhedron(static_cast<std::uint64_t>(seed), &what, nullptr);
+    Decomposition d;
+    try {
+      d = decompose(in);
+    } catch (const Error&) {  // the decomposition's own test counts these
+      ++skipped;
+      continue;
+    }
+    FaceGridOptions opt;
+    opt.elements = 3000;
+    FaceGrids g;
+    try {
+      g = mesh_faces(d.model, opt);
+    } catch (const Error& e) {
+      ADD_FAILURE() << what << ": " << e.what();
+      break;
+    }
+    expect_faces_covered(g, d.model);
+    for (std::size_t c = 0; c < d.cells.size(); ++c)
+      expect_closed(g, d.model, d.cells[c].faces, d.cells[c].outward, what + " cell " + std::to_string(c));
+    ++meshed;
+    if (HasFailure()) break;
+  }
+  std::cout << "face grids of random CSG solids: " << meshed << " meshed, " << skipped << " not decomposed\n";
+  EXPECT_GE(meshed, n * 9 / 10);
+}
+
+TEST(FaceGrids, OptionsAndCancel) {
+  const PolyhedralModel m = prepare_model(test::poly(test::unit_cube()));
+  EXPECT_THROW(mesh_faces(m, {}), InputError);
+  FaceGridOptions opt;
+  opt.size = 0.25;
+  int calls = 0;
+  opt.progress = [&](double) { return ++calls < 3; };
+  EXPECT_THROW(mesh_faces(m, opt), Cancelled);
+  EXPECT_EQ(calls, 3);
+  opt.progress = nullptr;
+  opt.optimize = false;
+  const FaceGrids g = mesh_faces(m, opt);
+  EXPECT_DOUBLE_EQ(g.h, 0.25);
+  expect_regions_closed(g, m);
+}
+
+}  // namespace
+}  // namespace bisect::mesh2d
