@@ -23,3 +23,10 @@ echo "\$ bisect-mesh info examples/cube-cavity-adjacent-cube.poly"
 echo
 echo "\$ bisect-mesh quality examples/box-minus-cylinder.msh"
 "$prefix/bin/bisect-mesh" quality "$root/examples/box-minus-cylinder.msh"
+echo
+# The main job: the thesis's cube with a cavity beside a second cube, meshed into tetrahedra.
+out=$(mktemp -d)
+echo "\$ bisect-mesh examples/cube-cavity-adjacent-cube.poly -n 10000 -o cube.vtu --stats cube.json"
+"$prefix/bin/bisect-mesh" "$root/examples/cube-cavity-adjacent-cube.poly" -n 10000 -o "$out/cube.vtu" --stats "$out/cube.json" 2>&1 | sed "s|$out/||"
+cat "$out/cube.json"; echo
+rm -rf "$out"

@@ -1,6 +1,7 @@
 // bisect-mesh: the command-line face of the library. Exit codes (ARCHITECTURE.md §3): 0 done;
 // 2 bad input or options, with one line on stderr naming what and where; 3 the mesher could not
 // finish. No exception escapes: every failure becomes such a line.
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -22,11 +23,19 @@ const char* kUsage =
     "                  2D input, meshed into triangles (written as .vtu)\n"
     "  -o OUTPUT       where the result goes\n"
     "  -n ELEMENTS     the required number of elements (default: the input's own R)\n"
+    "  -s SIZE         the nodal spacing itself (an absolute element size) instead of -n\n"
+    "  --optimize N    passes of min-max local transformations over the whole mesh (default 1)\n"
+    "  --smooth N      passes of Laplace smoothing of interior nodes (default 2)\n"
+    "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
+    "                  improvement after each node) or delaunay (Delaunay cavities, min-max\n"
+    "                  improvement at the end)\n"
     "  --quads         2D: pair triangles into quadrilaterals (no angle under 20 degrees)\n"
     "  --cells-only    stop after the convex decomposition and write the convex cells as a\n"
     "                  .poly file, one region per cell, cells sharing their faces\n"
-    "  --stats FILE    write statistics as JSON: convex_cells, bisections by method,\n"
-    "                  rejected_planes by reason, deferred_edges, times (init_geom, bisect);\n"
+    "  --stats FILE    write statistics as JSON: nodes, tets, regions, convex_cells, times\n"
+    "                  (init_geom, bisect, gen_nodes, gen_tets, optimize, total), quality;\n"
+    "                  --cells-only: convex_cells, bisections by method, rejected_planes by\n"
+    "                  reason, deferred_edges, times (init_geom, bisect);\n"
     "                  2D: nodes, triangles, quads, convex_pieces, min_angle, max_angle, times\n"
     "\n"
     "commands:\n"
@@ -87,6 +96,24 @@ int main(int argc, char** argv) {
       const long long n = std::strtoll(v.c_str(), &end, 10);
       if (end == v.c_str() || *end != '\0' || n <= 0) return usage_error(a + " needs a positive whole number, not '" + v + "'");
       mesh.elements = n;
+    } else if (a == "-s" || a == "--size") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a size");
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !(x > 0) || !std::isfinite(x)) return usage_error(a + " needs a positive size, not '" + v + "'");
+      mesh.size = x;
+    } else if (a == "--insertion") {
+      std::string v;
+      if (!value(&v) || (v != "minmax" && v != "delaunay")) return usage_error(a + " needs minmax or delaunay");
+      mesh.delaunay_insertion = v == "delaunay";
+    } else if (a == "--optimize" || a == "--smooth") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number of passes");
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end != '\0' || n < 0 || n > 100) return usage_error(a + " needs a number of passes from 0 to 100, not '" + v + "'");
+      (a == "--optimize" ? mesh.optimize_passes : mesh.smooth_passes) = static_cast<int>(n);
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {

@@ -1,10 +1,10 @@
-// `bisect-mesh INPUT -o OUTPUT`: the generator's stages as far as they are built. Today that is
-// the convex decomposition (--cells-only); asking for tetrahedra says plainly that the 3D
-// generator is not there yet instead of writing something else.
+// `bisect-mesh INPUT -o OUTPUT`: a tetrahedral mesh of a polyhedral input (the whole generator,
+// thesis 6.9.2), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
 #include <fstream>
 #include <ostream>
 
 #include "bisect/errors.hpp"
+#include "bisect/generate.hpp"
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "mesh2d/planar_mesher.hpp"
@@ -42,8 +42,29 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
           << " nodes, angles " << st.min_angle_deg << " to " << st.max_angle_deg << " degrees, " << st.seconds_total << " s\n";
     return 0;
   }
-  if (!opt.cells_only)
-    throw InputError("tetrahedral meshing is not available in this version; --cells-only writes the convex cells");
+  if (!opt.cells_only) {
+    if (ends_with(opt.output, ".poly")) throw InputError(opt.output + ": a tetrahedral mesh is written as .vtu, .msh, .inp or .unv");
+    const PolyInput in = read_polyhedral(input);
+    GenerateOptions go;
+    go.elements = opt.elements;
+    go.size = opt.size;
+    go.optimize_passes = opt.optimize_passes;
+    go.smooth_passes = opt.smooth_passes;
+    go.delaunay_insertion = opt.delaunay_insertion;
+    GenerateStats st;
+    const TetMesh mesh = generate_mesh(in, go, &st);
+    write_mesh(mesh, opt.output);
+    const QualitySummary q = summarize_quality(element_quality(mesh));
+    if (!opt.stats.empty()) {
+      std::ofstream s(opt.stats);
+      if (!s) throw InputError(opt.stats + ": cannot write");
+      s << generate_stats_json(st, q) << '\n';
+    }
+    if (!opt.quiet)
+      out << opt.output << ": " << st.tets << " tetrahedra, " << st.nodes << " nodes, " << st.convex_cells << " convex cells, "
+          << "min dihedral " << q.dihedral_min.min << " degrees, mean alpha " << q.alpha.mean << ", " << st.total << " s\n";
+    return 0;
+  }
   if (!ends_with(opt.output, ".poly"))
     throw InputError(opt.output + ": --cells-only writes the thesis .poly format; name the output *.poly");
   const PolyInput in = read_polyhedral(input);

@@ -25,6 +25,11 @@ struct TetQuality {
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// The smallest corner solid angle alone (steradians, the same formula as tet_quality's), for the
+// min-max criterion of the local transformations (thesis 7.5), which evaluates it millions of
+// times. Orientation is not judged: the callers check it exactly with orient3d.
+double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
 std::vector<TetQuality> element_quality(const TetMesh& mesh);
 

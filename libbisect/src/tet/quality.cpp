@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "geom/predicates.hpp"
@@ -22,6 +23,33 @@ constexpr double kDegrees = 180.0 / kPi;
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
 }  // namespace
+
+double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  // Van Oosterom–Strackee on unit edge vectors at each corner:
+  // tan(Ω/2) = |â·(b̂×ĉ)| / (1 + â·b̂ + â·ĉ + b̂·ĉ). The smallest corner angle of a tetrahedron is
+  // below π (the four add up to at most 2π), so its
+  // denominator is positive and the ratio is monotone in Ω: the minimum ratio gives the minimum
+  // angle with one arctangent. The six edges are normalised once.
+  const std::array<Vec3, 4> p{a, b, c, d};
+  Vec3 u[4][4];
+  for (const auto& e : kTetEdge) {
+    const Vec3 n = (p[e[1]] - p[e[0]]).normalized();
+    u[e[0]][e[1]] = n;
+    u[e[1]][e[0]] = -n;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  bool flat = true;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4, k = (i + 2) % 4, l = (i + 3) % 4;
+    const Vec3 &x = u[i][j], &y = u[i][k], &z = u[i][l];
+    const double num = std::abs(x.dot(y.cross(z)));
+    const double den = 1 + x.dot(y) + x.dot(z) + y.dot(z);
+    if (den <= 0) continue;  // a corner of π or more: not the smallest
+    flat = false;
+    best = std::min(best, num / den);
+  }
+  return flat ? 0 : 2 * std::atan(best);
+}
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   TetQuality q;
@@ -76,16 +104,7 @@ TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   // Solid angle at each corner by Van Oosterom–Strackee on unit edge vectors:
   // tan(Ω/2) = |â·(b̂×ĉ)| / (1 + â·b̂ + â·ĉ + b̂·ĉ). atan2 puts Ω in [0, 2π) also when the
   // denominator is zero or negative (Ω ≥ π, a corner flattened into its opposite face).
-  double omega_min = 4 * kPi;
-  for (int i = 0; i < 4; ++i) {
-    Vec3 e[3];
-    for (int k = 0, m = 0; k < 4; ++k)
-      if (k != i) e[m++] = (p[k] - p[i]).normalized();
-    const double num = std::abs(e[0].dot(e[1].cross(e[2])));
-    const double den = 1 + e[0].dot(e[1]) + e[0].dot(e[2]) + e[1].dot(e[2]);
-    omega_min = std::min(omega_min, 2 * std::atan2(num, den));
-  }
-  q.solid_angle_min = omega_min;
+  q.solid_angle_min = min_solid_angle(p[0], p[1], p[2], p[3]);
 
   // γ = β V² / S³ with V = det/6 and S = area2/2.
   const double area = area2 / 2;

@@ -173,9 +173,15 @@ TEST(Cli, MainJobErrorsExitTwo) {
   CliResult r = run(in + " --cells-only");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("no output file"), std::string::npos) << r.err;
-  r = run(in + " -o '" + (scratch_dir() / "out.vtu").string() + "'");
+  r = run(in + " -o '" + (scratch_dir() / "out.poly").string() + "'");  // tetrahedra are not .poly
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("not available"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(".vtu, .msh, .inp or .unv"), std::string::npos) << r.err;
+  r = run(in + " -o '" + (scratch_dir() / "out.vtu").string() + "' -s -1");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("-s needs a positive size"), std::string::npos) << r.err;
+  r = run(in + " -o '" + (scratch_dir() / "out.vtu").string() + "' --insertion bowyer");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("minmax or delaunay"), std::string::npos) << r.err;
   r = run(in + " --cells-only -o");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("-o needs a file name"), std::string::npos) << r.err;
@@ -184,6 +190,27 @@ TEST(Cli, MainJobErrorsExitTwo) {
   r = run("'" + open.string() + "' --cells-only -o '" + (scratch_dir() / "c.poly").string() + "'");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
+// The main job: tetrahedra of the thesis's two regions, written, read back valid by `quality`,
+// with the statistics of ARCHITECTURE.md §3; both insertion methods and -s.
+TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
+  const fs::path out = scratch_dir() / "cubes.vtu", stats = scratch_dir() / "cubes.json", inp = scratch_dir() / "cubes.inp";
+  const std::string in = "'" + std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly'";
+  CliResult r = run(in + " -n 3000 -o '" + out.string() + "' --stats '" + stats.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("tetrahedra"), std::string::npos) << r.out;
+  const std::string s = slurp(stats);
+  for (const char* key : {"\"nodes\"", "\"tets\"", "\"regions\": 2", "\"convex_cells\"", "\"init_geom\"", "\"bisect\"", "\"gen_nodes\"",
+                          "\"gen_tets\"", "\"optimize\"", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
+    EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
+  CliResult q = run("quality '" + out.string() + "'");
+  EXPECT_EQ(q.code, 0) << q.out << q.err;
+  EXPECT_NE(q.out.find("valid: yes"), std::string::npos) << q.out;
+  r = run(in + " -s 0.2 --insertion minmax --optimize 2 --smooth 0 -o '" + inp.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  q = run("quality '" + inp.string() + "'");
+  EXPECT_EQ(q.code, 0) << q.out << q.err;
 }
 
 TEST(Cli, CellsOnlyRejectsACavityCrossingItsOuterBoundary) {

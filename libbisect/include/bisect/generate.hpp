@@ -1,0 +1,46 @@
+// The 3D generator end to end (thesis 6.9.2): the convex decomposition, the nodal spacing from
+// the required number of elements (6.11, A2: Np = cbrt(8 V / R)), face grids on every face of
+// every cell (5.2, shared across cells and interfaces), interior nodes by 3D convex shrinking
+// (7.4), the boundary-constrained local min-max triangulation of each cell (7.6), then the
+// local transformations over the whole mesh (7.5) and Laplace smoothing that never inverts an
+// element nor moves a boundary node.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "bisect/poly_input.hpp"
+#include "bisect/quality.hpp"
+#include "bisect/tet_mesh.hpp"
+
+namespace bisect {
+
+struct GenerateOptions {
+  std::int64_t elements = 0;  // the thesis's R; 0: the input's own (its header), else -s
+  double size = 0;            // an absolute spacing Np instead of R, when > 0
+  int optimize_passes = 1;    // global min-max transformation passes (7.5)
+  int smooth_passes = 2;      // Laplace smoothing passes over interior nodes
+  bool delaunay_insertion = true;   // Delaunay cavities, else the thesis's min-max (cell_fill.hpp)
+  std::function<bool(double)> progress;  // fraction done; return false to cancel
+};
+
+struct GenerateStats {
+  std::int64_t nodes = 0, tets = 0, regions = 0, convex_cells = 0;
+  double spacing = 0;                 // the Np used
+  std::int64_t helper_nodes = 0;      // cells that needed a centroid helper (7.6)
+  std::int64_t helpers_removed = 0;   // of those, helpers removed again
+  std::int64_t skipped_nodes = 0;     // interior nodes that fell on a face or node (not inserted)
+  std::int64_t flips = 0;             // local transformations applied, all stages
+  // seconds: preparation, decomposition, node placement with face grids, cell filling,
+  // optimisation with smoothing, all
+  double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;
+};
+
+// Throws InputError (bad input, no element count), MeshingError (a stage could not finish,
+// naming where) or Cancelled.
+TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateStats* stats = nullptr);
+
+// The --stats JSON of ARCHITECTURE.md §3: counts, times and the quality summary.
+std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q);
+
+}  // namespace bisect

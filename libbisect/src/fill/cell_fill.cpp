@@ -1,0 +1,114 @@
+#include "fill/cell_fill.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "bisect/errors.hpp"
+#include "geom/predicates.hpp"
+
+namespace bisect::fill {
+namespace {
+
+// The star of the boundary from node c: one tetrahedron per boundary triangle; empty when c
+// does not see every triangle from inside.
+std::vector<Tet> star(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, Index c) {
+  std::vector<Tet> tets;
+  tets.reserve(boundary.size());
+  for (const auto& t : boundary) {
+    const Tet m{t[1], t[0], t[2], c};  // outward triangle seen from inside: reversed
+    if (!positive(X, m)) return {};
+    tets.push_back(m);
+  }
+  return tets;
+}
+
+// Removes the helper node v by collapsing it onto the neighbour that leaves the best
+// tetrahedra, when every changed tetrahedron stays positive. Returns whether it went.
+bool collapse_helper(TetComplex& cx, Index v) {
+  std::vector<Index> around;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t] && cx.corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+  std::vector<Index> neighbours;
+  for (Index t : around)
+    for (Index w : cx.tet[t])
+      if (w != v && std::find(neighbours.begin(), neighbours.end(), w) == neighbours.end()) neighbours.push_back(w);
+  double best = -1;
+  std::vector<Tet> best_fresh;
+  for (Index w : neighbours) {
+    std::vector<Tet> fresh;
+    double worst = std::numeric_limits<double>::max();
+    bool ok = true;
+    for (Index t : around) {
+      if (cx.corner_of(t, w) >= 0) continue;  // tetrahedra on the edge v w vanish
+      Tet m = cx.tet[t];
+      m[cx.corner_of(t, v)] = w;
+      if (!positive(cx.X, m)) {
+        ok = false;
+        break;
+      }
+      worst = std::min(worst, tet_min_solid_angle(cx.X, m));
+      fresh.push_back(m);
+    }
+    if (ok && worst > best) best = worst, best_fresh = std::move(fresh);
+  }
+  if (best < 0) return false;
+  cx.replace(around, best_fresh);
+  return true;
+}
+
+}  // namespace
+
+std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
+                                  const std::vector<Index>& interior, const Vec3& centroid, bool delaunay, CellFillStats* stats) {
+  CellFillStats st;
+  // the star's centre: the interior node nearest the centroid, else a helper at the centroid
+  std::vector<Index> rest = interior;
+  std::sort(rest.begin(), rest.end(), [&](Index a, Index b) { return (X[a] - centroid).squaredNorm() < (X[b] - centroid).squaredNorm(); });
+  std::vector<Tet> tets;
+  Index centre = -1;
+  if (!rest.empty()) {
+    tets = star(X, boundary, rest.front());
+    if (!tets.empty()) {
+      centre = rest.front();
+      rest.erase(rest.begin());
+    }
+  }
+  if (centre < 0) {
+    X.push_back(centroid);
+    centre = static_cast<Index>(X.size() - 1);
+    tets = star(X, boundary, centre);
+    st.helper = true;
+    if (tets.empty()) throw MeshingError("cell fill: the centroid does not see every boundary triangle (a cell that is not convex)");
+  }
+  TetComplex cx(X);
+  cx.build(std::move(tets));
+  st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  // the other nodes, nearest the centre first, so that each walk starts close to its target
+  Index last = 0;
+  for (Index v : rest) {
+    const std::vector<Index> made = delaunay ? cx.insert_delaunay(v, last) : cx.insert(v, last);
+    if (made.empty()) {
+      ++st.skipped;
+      continue;
+    }
+    ++st.inserted;
+    last = made.front();
+    if (!delaunay) {
+      std::vector<std::pair<Index, int>> queue;
+      for (Index t : made)
+        for (int f = 0; f < 4; ++f) queue.push_back({t, f});
+      st.flips += cx.improve(std::move(queue), std::numeric_limits<std::int64_t>::max());
+    }
+    if (!cx.alive[last]) last = 0;
+  }
+  if (delaunay) st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  if (st.helper && collapse_helper(cx, centre)) {
+    st.helper_removed = true;
+    st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  }
+  if (stats) *stats = st;
+  return cx.tets();
+}
+
+}  // namespace bisect::fill

@@ -1,0 +1,33 @@
+// Interior nodes of a convex cell by 3D convex domain shrinking (thesis 7.4): layer k is the cell
+// with every face plane moved inwards by k Np, i.e. the intersection of the moved half-spaces;
+// its edges sharper than 30 degrees are cut off by a plane Np / (2 tan(phi / 2)) in from the
+// edge; nodes go on each of its faces by the 2D placement (edges at spacing Np, face interiors
+// by 2D shrinking), nodes closer than Np / 2 merged (short edges, narrowness); repeated until
+// the layer is empty. A layer thinner than Np / 2 gets one sheet of nodes through its middle and
+// ends the shrinking.
+#pragma once
+#include <vector>
+
+#include "bisect/types.hpp"
+
+namespace bisect::fill {
+
+// A convex polytope: its corners and its faces, each a loop of corner ids counter-clockwise
+// seen from outside, with the outward unit normal and offset (normal . x = offset).
+struct Polytope {
+  std::vector<Vec3> v;
+  std::vector<std::vector<int>> faces;
+  std::vector<Vec3> normal;
+  std::vector<double> offset;
+  double volume() const;
+  double area() const;
+  Vec3 centroid() const;  // of the solid
+};
+
+// The part of p with normal . x <= offset (scale: the size used for the on-plane tolerance).
+Polytope clip(const Polytope& p, const Vec3& normal, double offset, double scale);
+
+// The interior nodes of the convex cell `cell` at spacing np.
+std::vector<Vec3> shrink_cell_nodes(const Polytope& cell, double np);
+
+}  // namespace bisect::fill

@@ -1,0 +1,217 @@
+#include "bisect/generate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "bisect/errors.hpp"
+#include "bisect/polyhedral_model.hpp"
+#include "fill/cell_fill.hpp"
+#include "fill/cell_nodes.hpp"
+#include "fill/smooth3d.hpp"
+#include "fill/tet_complex.hpp"
+#include "mesh2d/face_grids.hpp"
+
+namespace bisect {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The cell as a polytope: its faces' outer loops, turned to run counter-clockwise seen from
+// outside, with outward planes.
+fill::Polytope cell_polytope(const PolyhedralModel& m, const ConvexCell& c) {
+  fill::Polytope p;
+  std::vector<int> local(m.nodes.size(), -1);
+  for (std::size_t k = 0; k < c.faces.size(); ++k) {
+    const ModelFace& f = m.faces[c.faces[k]];
+    std::vector<int> loop;
+    for (Index v : f.loops[0]) {
+      if (local[v] < 0) {
+        local[v] = static_cast<int>(p.v.size());
+        p.v.push_back(m.nodes[v]);
+      }
+      loop.push_back(local[v]);
+    }
+    if (!c.outward[k]) std::reverse(loop.begin(), loop.end());
+    p.faces.push_back(std::move(loop));
+    p.normal.push_back(c.outward[k] ? f.normal : Vec3(-f.normal));
+    p.offset.push_back(c.outward[k] ? f.offset : -f.offset);
+  }
+  return p;
+}
+
+struct Built {
+  std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0;
+  std::vector<Vec3> X;
+  std::vector<fill::Tet> tets;
+  std::vector<Index> region;
+  std::size_t boundary_nodes = 0;  // face-grid nodes: fixed
+  mesh2d::FaceGrids grids;
+};
+
+// Face grids, interior nodes and the filled cells at spacing np.
+Built fill_cells(const Decomposition& d, double np, const GenerateOptions& opt, GenerateStats& st) {
+  Built b;
+  auto t0 = Clock::now();
+  mesh2d::FaceGridOptions fo;
+  fo.size = np;
+  b.grids = mesh2d::mesh_faces(d.model, fo);
+  b.X = b.grids.nodes;
+  b.boundary_nodes = b.X.size();
+  std::vector<fill::Polytope> polys;
+  std::vector<std::vector<Index>> interior(d.cells.size());
+  for (std::size_t c = 0; c < d.cells.size(); ++c) {
+    polys.push_back(cell_polytope(d.model, d.cells[c]));
+    for (const Vec3& p : fill::shrink_cell_nodes(polys.back(), np)) {
+      b.X.push_back(p);
+      interior[c].push_back(static_cast<Index>(b.X.size() - 1));
+    }
+  }
+  st.gen_nodes += since(t0);
+  t0 = Clock::now();
+  for (std::size_t c = 0; c < d.cells.size(); ++c) {
+    const ConvexCell& cell = d.cells[c];
+    std::vector<std::array<Index, 3>> boundary;
+    for (std::size_t k = 0; k < cell.faces.size(); ++k)
+      for (const auto& t : b.grids.face_tris[cell.faces[k]])
+        boundary.push_back(cell.outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]});
+    fill::CellFillStats cs;
+    std::vector<fill::Tet> tets;
+    try {
+      tets = fill::fill_convex_cell(b.X, boundary, interior[c], polys[c].centroid(), opt.delaunay_insertion, &cs);
+    } catch (const MeshingError& e) {
+      throw MeshingError("convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1) + ": " + e.what());
+    }
+    b.helper_nodes += cs.helper;
+    b.helpers_removed += cs.helper_removed;
+    b.skipped_nodes += cs.skipped;
+    b.flips += cs.flips;
+    b.tets.insert(b.tets.end(), tets.begin(), tets.end());
+    b.region.resize(b.tets.size(), cell.source_region);
+    if (opt.progress && !opt.progress(0.2 + 0.6 * static_cast<double>(c + 1) / static_cast<double>(d.cells.size()))) throw Cancelled();
+  }
+  st.gen_tets += since(t0);
+  return b;
+}
+
+// Boundary triangles of the mesh: the grids of the input faces (interfaces included), turned
+// outwards on the outer boundary; tagged with the input face.
+void boundary_triangles(const PolyhedralModel& m, const mesh2d::FaceGrids& g, TetMesh& out) {
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const ModelFace& face = m.faces[f];
+    if (!face.alive || face.source < 0) continue;
+    const bool flip = face.back < 0 && face.front >= 0;  // the normal points into the mesh
+    for (const auto& t : g.face_tris[f]) {
+      out.tris.insert(out.tris.end(), {t[0], flip ? t[2] : t[1], flip ? t[1] : t[2]});
+      out.tri_tag.push_back(face.source);
+    }
+  }
+}
+
+}  // namespace
+
+TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateStats* stats) {
+  const auto t_all = Clock::now();
+  GenerateStats st;
+  const std::int64_t want = opt.elements > 0 ? opt.elements : in.required_elements;
+  if (opt.size <= 0 && want <= 0) throw InputError(in.source + ": no required number of elements (give -n or -s)");
+  DecomposeOptions dopt;
+  if (opt.progress) dopt.progress = [&](double x) { return opt.progress(0.2 * x); };
+  const Decomposition d = decompose(in, dopt);
+  st.init_geom = d.stats.prepare_seconds;
+  st.bisect = d.stats.bisect_seconds;
+  st.convex_cells = static_cast<std::int64_t>(d.cells.size());
+  std::vector<Index> meshed;  // input regions that got cells (cavities get none)
+  for (const ConvexCell& c : d.cells)
+    if (std::find(meshed.begin(), meshed.end(), c.source_region) == meshed.end()) meshed.push_back(c.source_region);
+  st.regions = static_cast<std::int64_t>(meshed.size());
+  double volume = 0;
+  for (const ConvexCell& c : d.cells) volume += cell_polytope(d.model, c).volume();
+  // 6.11 and A2: the ideal spacing; the count it gives is then corrected once, the count going
+  // with 1 / Np^3 (real meshes hold more tetrahedra than V / (Np^3 / 8))
+  double np = opt.size > 0 ? opt.size : std::cbrt(8 * volume / static_cast<double>(want));
+  Built b = fill_cells(d, np, opt, st);
+  double used = np;
+  const auto miss = [&](const Built& x) { return std::abs(static_cast<double>(x.tets.size()) - static_cast<double>(want)); };
+  // corrections, the closest count winning: a cube-root step while the counts lie on one side
+  // of the request, bisection (in log Np) once they bracket it; on small cells the count jumps
+  // with the number of segments per edge and of shrinking layers, hence the bracketing
+  double lo = 0, hi = 0;  // spacings known to give too many, too few tetrahedra
+  auto note = [&](double spacing, std::size_t count) {
+    if (count > static_cast<std::size_t>(want)) lo = std::max(lo, spacing);
+    else hi = hi > 0 ? std::min(hi, spacing) : spacing;
+  };
+  note(np, b.tets.size());
+  for (int round = 0; round < 6 && opt.size <= 0; ++round) {
+    const double ratio = static_cast<double>(b.tets.size()) / static_cast<double>(want);
+    if (std::abs(ratio - 1) <= 0.05) break;
+    const double last = np;
+    np = lo > 0 && hi > 0 ? std::sqrt(lo * hi) : np * std::cbrt(ratio);
+    if (std::abs(np / last - 1) < 1e-3) break;
+    Built again = fill_cells(d, np, opt, st);  // times add up over the rounds
+    note(np, again.tets.size());
+    // a round that gains little means the count is held by the boundary (an STL's many
+    // facets each need their triangles): stop rather than mesh again and again
+    const bool gained = miss(again) < 0.9 * miss(b);
+    if (miss(again) < miss(b)) b = std::move(again), used = np;
+    if (!gained && !(lo > 0 && hi > 0)) break;
+  }
+  st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
+  st.spacing = used;
+  // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
+  const auto t_opt = Clock::now();
+  fill::TetComplex cx(b.X);
+  cx.build(std::move(b.tets), std::move(b.region));
+  for (std::size_t f = 0; f < d.model.faces.size(); ++f)
+    if (d.model.faces[f].alive && d.model.faces[f].source >= 0)
+      for (const auto& t : b.grids.face_tris[f]) cx.constrained.insert(fill::face_key(t[0], t[1], t[2]));
+  // transformations and smoothing in turn: each opens moves for the other
+  for (int pass = 0; pass < std::max(opt.optimize_passes, opt.smooth_passes); ++pass) {
+    if (pass < opt.optimize_passes) st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+    if (pass < opt.smooth_passes) {
+      fill::smooth_interior(b.X, cx.tets(), b.boundary_nodes, 1);
+      cx.refresh_quality();
+    }
+  }
+  const std::vector<fill::Tet> tets = cx.tets();
+  const std::vector<Index> region = cx.tags();
+  if (opt.progress && !opt.progress(1.0)) throw Cancelled();
+  st.optimize = since(t_opt);
+  // the mesh: used nodes only, in their order (dead model nodes, skipped nodes and removed
+  // helpers drop out)
+  TetMesh out;
+  std::vector<Index> id(b.X.size(), -1);
+  for (const auto& t : tets)
+    for (Index v : t) id[v] = 0;
+  for (std::size_t v = 0; v < b.X.size(); ++v)
+    if (id[v] == 0) {
+      id[v] = static_cast<Index>(out.nodes.size());
+      out.nodes.push_back(b.X[v]);
+    }
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Index v[4] = {id[tets[t][0]], id[tets[t][1]], id[tets[t][2]], id[tets[t][3]]};
+    out.add_tet(v, region[t]);
+  }
+  boundary_triangles(d.model, b.grids, out);
+  for (Index& v : out.tris) v = id[v];
+  st.nodes = static_cast<std::int64_t>(out.nodes.size());
+  st.tets = static_cast<std::int64_t>(out.num_tets());
+  st.total = since(t_all);
+  if (stats) *stats = st;
+  return out;
+}
+
+std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q) {
+  std::ostringstream o;
+  o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
+    << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
+    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"times\": {\"init_geom\": " << s.init_geom
+    << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes << ", \"gen_tets\": " << s.gen_tets
+    << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total << "}, \"quality\": " << quality_json(q) << "}";
+  return o.str();
+}
+
+}  // namespace bisect

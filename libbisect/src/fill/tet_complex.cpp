@@ -1,0 +1,446 @@
+#include "fill/tet_complex.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "bisect/errors.hpp"
+#include "bisect/quality.hpp"
+#include "bisect/tet_mesh.hpp"
+#include "geom/predicates.hpp"
+
+namespace bisect::fill {
+
+using geom::orient3d;
+
+FaceKey face_key(Index a, Index b, Index c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
+}
+
+bool positive(const std::vector<Vec3>& X, const Tet& t) { return orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) > 0; }
+
+double tet_min_solid_angle(const std::vector<Vec3>& X, const Tet& t) { return min_solid_angle(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
+
+void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
+  tet = std::move(tets);
+  tag = std::move(tags);
+  tag.resize(tet.size(), 0);
+  q.resize(tet.size());
+  for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_min_solid_angle(X, tet[t]);
+  nb.assign(tet.size(), {-1, -1, -1, -1});
+  alive.assign(tet.size(), 1);
+  free_.clear();
+  std::unordered_map<FaceKey, std::pair<Index, int>, FaceKeyHash> open;
+  open.reserve(tet.size() * 2);
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(static_cast<Index>(t), f);
+      const FaceKey k = face_key(fv[0], fv[1], fv[2]);
+      auto it = open.find(k);
+      if (it == open.end()) {
+        open.emplace(k, std::make_pair(static_cast<Index>(t), f));
+      } else {
+        nb[t][f] = it->second.first;
+        nb[it->second.first][it->second.second] = static_cast<Index>(t);
+        open.erase(it);
+      }
+    }
+}
+
+std::vector<Tet> TetComplex::tets() const {
+  std::vector<Tet> out;
+  out.reserve(live_count());
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) out.push_back(tet[t]);
+  return out;
+}
+
+void TetComplex::refresh_quality() {
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) q[t] = tet_min_solid_angle(X, tet[t]);
+}
+
+std::vector<Index> TetComplex::tags() const {
+  std::vector<Index> out;
+  out.reserve(live_count());
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) out.push_back(tag[t]);
+  return out;
+}
+
+std::array<Index, 3> TetComplex::face(Index t, int f) const {
+  const auto& c = kTetFace[f];
+  return {tet[t][c[0]], tet[t][c[1]], tet[t][c[2]]};
+}
+
+bool TetComplex::is_constrained(Index t, int f) const {
+  if (nb[t][f] < 0) return true;
+  if (constrained.empty()) return false;
+  const auto fv = face(t, f);
+  return constrained.count(face_key(fv[0], fv[1], fv[2])) > 0;
+}
+
+int TetComplex::corner_of(Index t, Index v) const {
+  for (int k = 0; k < 4; ++k)
+    if (tet[t][k] == v) return k;
+  return -1;
+}
+
+int TetComplex::face_towards(Index t, Index other) const {
+  for (int f = 0; f < 4; ++f)
+    if (nb[t][f] == other) return f;
+  return -1;
+}
+
+std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std::vector<Tet>& fresh) {
+  // the old set's outside faces, with the tetrahedron (and its face) on the other side
+  struct Outer {
+    FaceKey key;
+    Index n;
+    int nf;
+  };
+  std::vector<Outer> outer;
+  for (Index o : old)
+    for (int f = 0; f < 4; ++f) {
+      const Index n = nb[o][f];
+      if (n >= 0 && std::find(old.begin(), old.end(), n) != old.end()) continue;
+      const auto fv = face(o, f);
+      int nf = -1;
+      if (n >= 0)
+        for (int g = 0; g < 4; ++g)
+          if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) nf = g;
+      outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf});
+    }
+  const Index inherited = old.empty() ? 0 : tag[old.front()];
+  for (Index o : old) {
+    alive[o] = 0;
+    free_.push_back(o);
+  }
+  std::vector<Index> ids;
+  for (const Tet& t : fresh) {
+    Index id;
+    if (!free_.empty()) {
+      id = free_.back();
+      free_.pop_back();
+      tet[id] = t;
+      nb[id] = {-1, -1, -1, -1};
+      alive[id] = 1;
+      tag[id] = inherited;
+      q[id] = tet_min_solid_angle(X, t);
+    } else {
+      id = static_cast<Index>(tet.size());
+      tet.push_back(t);
+      nb.push_back({-1, -1, -1, -1});
+      alive.push_back(1);
+      tag.push_back(inherited);
+      q.push_back(tet_min_solid_angle(X, t));
+    }
+    ids.push_back(id);
+  }
+  // match every new face with another new one or with an old outside face: sorted by key,
+  // equal keys meet (a new face pairs with at most one other)
+  struct Side {
+    FaceKey key;
+    Index t;
+    int f;
+    bool fresh;
+  };
+  std::vector<Side> sides;
+  sides.reserve(ids.size() * 4 + outer.size());
+  for (Index id : ids)
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(id, f);
+      sides.push_back({face_key(fv[0], fv[1], fv[2]), id, f, true});
+    }
+  for (const Outer& o : outer) sides.push_back({o.key, o.n, o.nf, false});
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    if (x.key.a != y.key.a) return x.key.a < y.key.a;
+    if (x.key.b != y.key.b) return x.key.b < y.key.b;
+    if (x.key.c != y.key.c) return x.key.c < y.key.c;
+    return x.fresh > y.fresh;
+  });
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    const Side& x = sides[i];
+    if (!x.fresh) {  // an old face no new tetrahedron took up
+      i = j;
+      continue;
+    }
+    if (j - i != 2) throw MeshingError("tetrahedral complex: a replacement does not fill the space it replaces");
+    const Side& y = sides[i + 1];
+    nb[x.t][x.f] = y.t;
+    if (y.t >= 0) nb[y.t][y.f] = x.t;
+    i = j;
+  }
+  return ids;
+}
+
+Index TetComplex::locate(const Vec3& p, Index start) const {
+  Index t = start;
+  if (t < 0 || t >= static_cast<Index>(tet.size()) || !alive[t]) {
+    t = -1;
+    for (std::size_t k = 0; k < tet.size() && t < 0; ++k)
+      if (alive[k]) t = static_cast<Index>(k);
+    if (t < 0) return -1;
+  }
+  // visibility walk; the face to try first rotates, which keeps the walk from cycling
+  const std::size_t limit = 64 + 4 * tet.size();
+  unsigned rot = 0;
+  for (std::size_t step = 0; step < limit; ++step) {
+    bool moved = false;
+    for (int k = 0; k < 4 && !moved; ++k) {
+      const int f = static_cast<int>((k + rot) % 4);
+      const auto fv = face(t, f);
+      if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) > 0) {
+        if (nb[t][f] < 0) return -1;  // outside, across the boundary (the cells are convex)
+        t = nb[t][f];
+        moved = true;
+      }
+    }
+    if (!moved) return t;
+    rot = rot * 1103515245u + 12345u;
+    rot >>= 3;
+  }
+  for (std::size_t k = 0; k < tet.size(); ++k) {  // the walk did not settle: look everywhere
+    if (!alive[k]) continue;
+    bool in = true;
+    for (int f = 0; f < 4 && in; ++f) {
+      const auto fv = face(static_cast<Index>(k), f);
+      in = orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) <= 0;
+    }
+    if (in) return static_cast<Index>(k);
+  }
+  return -1;
+}
+
+bool TetComplex::holders(const Vec3& p, Index t0, std::vector<Index>* hold) const {
+  *hold = {t0};
+  for (std::size_t i = 0; i < hold->size(); ++i) {
+    const Index t = (*hold)[i];
+    int zeros = 0;
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(t, f);
+      if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) != 0) continue;
+      ++zeros;
+      if (is_constrained(t, f)) return false;  // on the boundary: not ours to split
+      if (std::find(hold->begin(), hold->end(), nb[t][f]) == hold->end()) hold->push_back(nb[t][f]);
+    }
+    if (zeros >= 3) return false;  // on a node
+  }
+  return true;
+}
+
+std::vector<Index> TetComplex::insert(Index v, Index start) {
+  const Vec3& p = X[v];
+  const Index t0 = locate(p, start);
+  std::vector<Index> hold;
+  if (t0 < 0 || !holders(p, t0, &hold)) return {};
+  std::vector<Tet> fresh;
+  for (Index t : hold)
+    for (int j = 0; j < 4; ++j) {
+      const auto fv = face(t, j);
+      if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) >= 0) continue;
+      Tet n = tet[t];
+      n[j] = v;
+      fresh.push_back(n);
+    }
+  return replace(hold, fresh);
+}
+
+std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
+  const Vec3& p = X[v];
+  const Index t0 = locate(p, start);
+  if (t0 < 0) return {};
+  std::vector<Index> seed;  // the tetrahedra whose closure holds p
+  if (!holders(p, t0, &seed)) return {};
+  std::vector<Index> cavity = seed;
+  for (std::size_t i = 0; i < cavity.size(); ++i)
+    for (int f = 0; f < 4; ++f) {
+      const Index n = nb[cavity[i]][f];
+      if (n < 0 || is_constrained(cavity[i], f) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      const Tet& u = tet[n];
+      if (geom::insphere(X[u[0]], X[u[1]], X[u[2]], X[u[3]], p) > 0) cavity.push_back(n);
+    }
+  // star-shaped from p: drop (non-seed) tetrahedra whose outer faces p does not see from inside
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < cavity.size() && !changed; ++i)
+      for (int f = 0; f < 4 && !changed; ++f) {
+        const Index n = nb[cavity[i]][f];
+        if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+        const auto fv = face(cavity[i], f);
+        if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) < 0) continue;
+        if (std::find(seed.begin(), seed.end(), cavity[i]) != seed.end()) continue;  // p on it
+        cavity.erase(cavity.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    if (!changed) break;
+    // what is left must hang together from the seeds
+    std::vector<Index> kept = seed;
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      for (int f = 0; f < 4; ++f) {
+        const Index n = nb[kept[i]][f];
+        if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end() && std::find(kept.begin(), kept.end(), n) == kept.end() &&
+            !is_constrained(kept[i], f))
+          kept.push_back(n);
+      }
+    cavity = std::move(kept);
+  }
+  std::vector<Tet> fresh;
+  for (Index t : cavity)
+    for (int f = 0; f < 4; ++f) {
+      const Index n = nb[t][f];
+      if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      const auto fv = face(t, f);
+      if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) >= 0) continue;  // a seed face p lies on
+      Tet m = tet[t];
+      m[f] = v;
+      fresh.push_back(m);
+    }
+  return replace(cavity, fresh);
+}
+
+std::vector<Index> TetComplex::edge_ring(Index t, Index a, Index b, bool* closed) const {
+  std::vector<Index> ring{t};
+  *closed = false;
+  Index cur = t, prev = -1;
+  for (int guard = 0; guard < 128; ++guard) {
+    // the two faces of cur through edge ab are those opposite its other two corners
+    int next_face = -1;
+    for (int f = 0; f < 4; ++f) {
+      const Index opp = tet[cur][f];
+      if (opp == a || opp == b) continue;
+      if (nb[cur][f] == prev && prev >= 0) continue;
+      next_face = f;
+      if (prev < 0) break;  // first step: either way round
+    }
+    if (next_face < 0 || is_constrained(cur, next_face)) return ring;
+    const Index n = nb[cur][next_face];
+    if (n == t) {
+      *closed = true;
+      return ring;
+    }
+    prev = cur;
+    cur = n;
+    ring.push_back(cur);
+  }
+  return ring;
+}
+
+bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
+  const Index n = nb[t][f];
+  if (n < 0 || is_constrained(t, f)) return false;
+  const auto fv = face(t, f);
+  Index e = -1;
+  for (int g = 0; g < 4; ++g)
+    if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) e = tet[n][g];
+  std::vector<Tet> fresh;
+  double after = 1e300;
+  for (Index c : fv) {  // each face corner of t replaced by e
+    Tet m = tet[t];
+    m[corner_of(t, c)] = e;
+    if (!positive(X, m)) return false;  // the segment between the apexes misses the face
+    after = std::min(after, tet_min_solid_angle(X, m));
+    fresh.push_back(m);
+  }
+  const double before = std::min(q[t], q[n]);
+  if (!(after > before * (1 + 1e-9))) return false;
+  for (Index id : replace({t, n}, fresh))
+    for (int g = 0; g < 4; ++g) queue.push_back({id, g});
+  return true;
+}
+
+bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue) {
+  bool closed = false;
+  const std::vector<Index> ring = edge_ring(t, a, b, &closed);
+  const std::size_t k = ring.size();
+  if (!closed || k < 3 || k > kMaxRing) return false;
+  // the ring's polygon: p[i] is the node ring[i] shares with ring[i + 1] (besides a and b)
+  std::vector<Index> p(k);
+  double before = 1e300;
+  for (std::size_t i = 0; i < k; ++i) {
+    before = std::min(before, q[ring[i]]);
+    const Tet& u = tet[ring[i]];
+    const Tet& w = tet[ring[(i + 1) % k]];
+    p[i] = -1;
+    for (Index x : u)
+      if (x != a && x != b && std::find(w.begin(), w.end(), x) != w.end()) p[i] = x;
+    if (p[i] < 0) return false;
+  }
+  // best triangulation of the polygon (Klincsek's dynamic programme): each triangle (i, m, j)
+  // makes two tetrahedra with a and b, valid when a lies on the side `sign` of it and b on the
+  // other; the ring's order fixes which sign that is, so both are tried
+  for (int sign : {1, -1}) {
+    std::vector<double> best(k * k, -1);  // best[i * k + j]: polygon i..j, -1 impossible
+    std::vector<int> split(k * k, -1);
+    for (std::size_t i = 0; i + 1 < k; ++i) best[i * k + i + 1] = 1e300;
+    for (std::size_t len = 2; len < k; ++len)
+      for (std::size_t i = 0; i + len < k; ++i) {
+        const std::size_t j = i + len;
+        for (std::size_t m = i + 1; m < j; ++m) {
+          const double l = best[i * k + m], r = best[m * k + j];
+          if (l < 0 || r < 0) continue;
+          const Vec3 &A = X[p[i]], &B = X[p[m]], &C = X[p[j]];
+          if (orient3d(A, B, C, X[a]) != sign || orient3d(A, B, C, X[b]) != -sign) continue;
+          const Tet ta = sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a};
+          const Tet tb = sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b};
+          const double worst = std::min({l, r, tet_min_solid_angle(X, ta), tet_min_solid_angle(X, tb)});
+          if (worst > best[i * k + j]) best[i * k + j] = worst, split[i * k + j] = static_cast<int>(m);
+        }
+      }
+    const double after = best[0 * k + k - 1];
+    if (after < 0) continue;
+    if (!(after > before * (1 + 1e-9))) return false;
+    std::vector<Tet> fresh;
+    std::vector<std::pair<std::size_t, std::size_t>> todo{{0, k - 1}};
+    while (!todo.empty()) {
+      const auto [i, j] = todo.back();
+      todo.pop_back();
+      if (j < i + 2) continue;
+      const std::size_t m = static_cast<std::size_t>(split[i * k + j]);
+      fresh.push_back(sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a});
+      fresh.push_back(sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b});
+      todo.push_back({i, m});
+      todo.push_back({m, j});
+    }
+    for (Index id : replace(ring, fresh))
+      for (int g = 0; g < 4; ++g) queue.push_back({id, g});
+    return true;
+  }
+  return false;
+}
+
+std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops) {
+  std::int64_t ops = 0;
+  for (std::size_t i = 0; i < queue.size() && ops < max_ops; ++i) {
+    const auto [t, f] = queue[i];
+    if (!alive[t] || is_constrained(t, f)) continue;
+    if (try_flip23(t, f, queue)) {
+      ++ops;
+      continue;
+    }
+    // edge removal costs a small dynamic programme per edge: only around a poor tetrahedron
+    if (std::min(q[t], q[nb[t][f]]) >= kEdgeRemovalBelow) continue;
+    const auto fv = face(t, f);
+    for (int e = 0; e < 3; ++e)
+      if (try_edge_removal(t, fv[e], fv[(e + 1) % 3], queue)) {
+        ++ops;
+        break;
+      }
+  }
+  return ops;
+}
+
+std::int64_t TetComplex::improve_all(std::int64_t max_ops) {
+  std::vector<std::pair<Index, int>> queue;
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t])
+      for (int f = 0; f < 4; ++f)
+        if (nb[t][f] > static_cast<Index>(t)) queue.push_back({static_cast<Index>(t), f});
+  return improve(std::move(queue), max_ops);
+}
+
+}  // namespace bisect::fill

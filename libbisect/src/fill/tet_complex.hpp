@@ -1,0 +1,108 @@
+// A tetrahedral complex that changes in place: the working structure of the boundary-constrained
+// min-max triangulation (thesis 7.6) and of the local transformations (7.5). Tetrahedra are
+// positively oriented (tet_mesh.hpp), face f lies opposite corner f, and nb[t][f] is the
+// tetrahedron across it (-1 on the boundary of what is being meshed). Every change goes through
+// `replace`, which swaps a set of tetrahedra for another set filling the same space and relinks
+// the new ones to each other and to the old outside neighbours, so a flip, a point insertion
+// and the removal of a helper vertex are each a few lines.
+//
+// Constrained faces (the boundary of a cell, or input faces and region interfaces in the global
+// pass) are the faces with no neighbour plus any face in `constrained`: no transformation
+// crosses or removes them.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "bisect/types.hpp"
+
+namespace bisect::fill {
+
+using Tet = std::array<Index, 4>;
+
+// A face's three nodes, sorted.
+struct FaceKey {
+  Index a, b, c;
+  bool operator==(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+FaceKey face_key(Index a, Index b, Index c);
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    return (static_cast<std::size_t>(k.a) * 73856093u) ^ (static_cast<std::size_t>(k.b) * 19349663u) ^ (static_cast<std::size_t>(k.c) * 83492791u);
+  }
+};
+
+class TetComplex {
+ public:
+  explicit TetComplex(const std::vector<Vec3>& nodes) : X(nodes) {}
+
+  const std::vector<Vec3>& X;
+  std::vector<Tet> tet;
+  std::vector<Tet> nb;
+  std::vector<char> alive;
+  std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
+  std::vector<double> q;   // per tetrahedron: its smallest solid angle, the min-max criterion
+  std::unordered_set<FaceKey, FaceKeyHash> constrained;
+
+  // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
+  // default to 0.
+  void build(std::vector<Tet> tets, std::vector<Index> tags = {});
+  // The live tetrahedra, and their tags in the same order.
+  std::vector<Tet> tets() const;
+  std::vector<Index> tags() const;
+  void refresh_quality();  // after the nodes moved (smoothing)
+  std::size_t live_count() const { return tet.size() - free_.size(); }
+
+  // Swaps the tetrahedra `old` for `fresh` (same region of space). Returns the new ids.
+  std::vector<Index> replace(const std::vector<Index>& old, const std::vector<Tet>& fresh);
+
+  // Face f's nodes, ordered so that their right-hand normal points out of t.
+  std::array<Index, 3> face(Index t, int f) const;
+  bool is_constrained(Index t, int f) const;
+  int corner_of(Index t, Index v) const;  // -1 when v is not a corner
+  int face_towards(Index t, Index other) const;  // the face of t shared with `other`, -1 if none
+
+  // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
+  // when the walk does not settle); -1 when p is outside every tetrahedron.
+  Index locate(const Vec3& p, Index start) const;
+  // Inserts node v (its position already in X) inside the complex: the tetrahedra whose
+  // closure holds it are split (1-4 inside, 2-6 on a face, n-2n on an edge). Returns the new
+  // tetrahedra, empty when v lies outside or on an existing node.
+  std::vector<Index> insert(Index v, Index start);
+  // The same insertion with a Delaunay cavity (Bowyer-Watson, exact insphere): every
+  // tetrahedron reachable without crossing a constrained face whose circumsphere holds v is
+  // replaced too, the cavity shrunk until v sees all its faces from inside.
+  std::vector<Index> insert_delaunay(Index v, Index start);
+
+  // Local min-max transformations (7.5) from the given faces onwards, whenever they raise the
+  // smallest solid angle of the tetrahedra involved: 2-3 across a face, and the removal of an
+  // interior edge whose ring has 3 to kMaxRing tetrahedra, the ring's polygon triangulated at
+  // its best (3-2 and the 4-4 of 7.5 are its rings of 3 and 4; larger rings reach further out
+  // of the local minima 7.6.1 describes). Returns the number applied.
+  std::int64_t improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops);
+  // improve() from every unconstrained interior face.
+  std::int64_t improve_all(std::int64_t max_ops);
+
+  // Tetrahedra around the edge (a, b) of t, in order; `closed` tells whether the ring closes
+  // (an interior edge) or ends at boundary or constrained faces.
+  std::vector<Index> edge_ring(Index t, Index a, Index b, bool* closed) const;
+
+ private:
+  std::vector<Index> free_;
+  // The tetrahedra whose closure holds p, from t0 (which does) across the faces p lies on;
+  // false when p is on a node or on a constrained face.
+  bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
+  bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
+  bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
+  static constexpr std::size_t kMaxRing = 7;
+  // Edge removal is tried only where a tetrahedron's smallest solid angle is below this (sr;
+  // the regular tetrahedron's is 0.551): above it the gain is small and the cost is not.
+  static constexpr double kEdgeRemovalBelow = 0.2;
+};
+
+// Positive orientation test of a tetrahedron given by node ids.
+bool positive(const std::vector<Vec3>& X, const Tet& t);
+double tet_min_solid_angle(const std::vector<Vec3>& X, const Tet& t);
+
+}  // namespace bisect::fill

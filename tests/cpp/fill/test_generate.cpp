@@ -1,0 +1,143 @@
+// The 3D generator end to end (thesis 6.9.2): every mesh passes the validator, fills the input's
+// volume, keeps cavities empty, shares interface nodes between regions, and lands near the
+// requested count; on the ../shared models when they are here.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "bisect/errors.hpp"
+#include "bisect/generate.hpp"
+#include "bisect/io.hpp"
+#include "bisect/shared_models.hpp"
+#include "bisect/validate.hpp"
+#include "poly_shapes.hpp"
+
+namespace bisect {
+namespace {
+
+namespace fs = std::filesystem;
+
+double mesh_volume(const TetMesh& m) {
+  double v = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)], &d = m.nodes[m.tet_node(t, 3)];
+    v += (b - a).dot((c - a).cross(d - a)) / 6;
+  }
+  return v;
+}
+
+std::string violations(const TetMesh& m) {
+  std::string s;
+  for (const Violation& v : validate(m)) s += v.message + "\n";
+  return s;
+}
+
+// Valid, the input's volume, every boundary triangle a face of a tetrahedron.
+void expect_sound(const TetMesh& m, const PolyInput& in, const std::string& what) {
+  EXPECT_TRUE(validate(m).empty()) << what << "\n" << violations(m);
+  EXPECT_NEAR(mesh_volume(m), summarize(in).volume, 1e-9 * summarize(in).volume) << what;
+  std::set<std::array<Index, 3>> faces;
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (const auto& f : kTetFace) {
+      std::array<Index, 3> k{m.tet_node(t, f[0]), m.tet_node(t, f[1]), m.tet_node(t, f[2])};
+      std::sort(k.begin(), k.end());
+      faces.insert(k);
+    }
+  std::size_t missing = 0;
+  for (std::size_t b = 0; b < m.num_tris(); ++b) {
+    std::array<Index, 3> k{m.tris[3 * b], m.tris[3 * b + 1], m.tris[3 * b + 2]};
+    std::sort(k.begin(), k.end());
+    missing += faces.count(k) == 0;
+  }
+  EXPECT_EQ(missing, 0u) << what << ": boundary triangles that no tetrahedron has";
+}
+
+TEST(Generate, CubeAndLPrismNearTheRequestedCount) {
+  for (const std::string& text : {test::unit_cube(), test::l_prism()})
+    for (std::int64_t n : {2000, 10000}) {
+      const PolyInput in = test::poly(text);
+      GenerateOptions opt;
+      opt.elements = n;
+      GenerateStats st;
+      const TetMesh m = generate_mesh(in, opt, &st);
+      expect_sound(m, in, text.substr(0, 12) + std::to_string(n));
+      EXPECT_NEAR(static_cast<double>(m.num_tets()), static_cast<double>(n), 0.2 * n) << n;
+      EXPECT_EQ(st.tets, static_cast<std::int64_t>(m.num_tets()));
+      const QualitySummary q = summarize_quality(element_quality(m));
+      EXPECT_GT(q.alpha.mean, 0.2) << n;  // the regular tetrahedron has 1/3
+      RecordProperty("alpha_mean_" + std::to_string(n), std::to_string(q.alpha.mean));
+    }
+}
+
+TEST(Generate, TwoRegionsShareTheirInterfaceAndLeaveTheCavityEmpty) {
+  // the thesis's cube with a cavity beside a second cube (6.13 example 1)
+  const PolyInput in = read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  for (bool delaunay : {true, false}) {
+    GenerateOptions opt;
+    opt.elements = 4000;
+    opt.delaunay_insertion = delaunay;
+    GenerateStats st;
+    const TetMesh m = generate_mesh(in, opt, &st);
+    expect_sound(m, in, delaunay ? "delaunay" : "minmax");
+    EXPECT_EQ(st.regions, 2);
+    std::map<Index, double> volume;
+    std::map<std::array<Index, 3>, std::set<Index>> face_regions;
+    for (std::size_t t = 0; t < m.num_tets(); ++t) {
+      const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)], &d = m.nodes[m.tet_node(t, 3)];
+      volume[m.region[t]] += (b - a).dot((c - a).cross(d - a)) / 6;
+      const Vec3 g = (a + b + c + d) / 4;
+      EXPECT_FALSE(g.x() > 0.25 && g.x() < 0.75 && g.y() > 0.25 && g.y() < 0.75 && g.z() > 0.25 && g.z() < 0.75) << "a tetrahedron in the cavity";
+      for (const auto& f : kTetFace) {
+        std::array<Index, 3> k{m.tet_node(t, f[0]), m.tet_node(t, f[1]), m.tet_node(t, f[2])};
+        std::sort(k.begin(), k.end());
+        face_regions[k].insert(m.region[t]);
+      }
+    }
+    ASSERT_EQ(volume.size(), 2u);
+    EXPECT_NEAR(volume.begin()->second, 1 - 0.125, 1e-9);  // the cube less its cavity
+    EXPECT_NEAR(volume.rbegin()->second, 1, 1e-9);         // the neighbour
+    // the interface x = 1: faces with a tetrahedron of each region on it, covering its unit area
+    double shared = 0;
+    for (const auto& [k, regions] : face_regions)
+      if (regions.size() == 2) shared += 0.5 * (m.nodes[k[1]] - m.nodes[k[0]]).cross(m.nodes[k[2]] - m.nodes[k[0]]).norm();
+    EXPECT_NEAR(shared, 1.0, 1e-9);
+  }
+}
+
+TEST(Generate, OptionsErrorsAndCancel) {
+  const PolyInput in = test::poly(test::unit_cube());
+  PolyInput no_r = in;
+  no_r.required_elements = 0;
+  EXPECT_THROW(generate_mesh(no_r, {}), InputError);
+  GenerateOptions opt;
+  opt.size = 0.25;
+  const TetMesh m = generate_mesh(in, opt);  // an absolute size: no calibration
+  expect_sound(m, in, "size 0.25");
+  int calls = 0;
+  opt.progress = [&](double) { return ++calls < 2; };
+  EXPECT_THROW(generate_mesh(in, opt), Cancelled);
+}
+
+class GenerateSharedModels : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GenerateSharedModels, ValidMeshesOfTheInputsVolume) {
+  const fs::path p = fs::path(BISECT_SHARED_DIR) / GetParam();
+  if (!fs::exists(p)) GTEST_SKIP() << p << " is not here (../shared is absent)";
+  const PolyInput in = read_polyhedral(p.string());
+  for (std::int64_t n : {1000, 10000}) {
+    GenerateOptions opt;
+    opt.elements = n;
+    GenerateStats st;
+    const TetMesh m = generate_mesh(in, opt, &st);
+    expect_sound(m, in, GetParam() + " " + std::to_string(n));
+    RecordProperty("tets_" + std::to_string(n), std::to_string(m.num_tets()));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, GenerateSharedModels, ::testing::ValuesIn(test::kSharedPolyhedralInputs),
+                         [](const ::testing::TestParamInfo<std::string>& i) { return test::test_name_of(i.param); });
+
+}  // namespace
+}  // namespace bisect
