@@ -102,10 +102,12 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     int nf;
   };
   std::vector<Outer> outer;
+  const unsigned in_old = new_stamp();
+  for (Index o : old) mark_[o] = in_old;
   for (Index o : old)
     for (int f = 0; f < 4; ++f) {
       const Index n = nb[o][f];
-      if (n >= 0 && std::find(old.begin(), old.end(), n) != old.end()) continue;
+      if (marked(n, in_old)) continue;
       const auto fv = face(o, f);
       int nf = -1;
       if (n >= 0)
@@ -256,44 +258,57 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
   if (t0 < 0) return {};
   std::vector<Index> seed;  // the tetrahedra whose closure holds p
   if (!holders(p, t0, &seed)) return {};
+  const unsigned in_cavity = new_stamp();
   std::vector<Index> cavity = seed;
+  for (Index t : seed) mark_[t] = in_cavity;
   for (std::size_t i = 0; i < cavity.size(); ++i)
     for (int f = 0; f < 4; ++f) {
       const Index n = nb[cavity[i]][f];
-      if (n < 0 || is_constrained(cavity[i], f) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      if (n < 0 || marked(n, in_cavity) || is_constrained(cavity[i], f)) continue;
       const Tet& u = tet[n];
-      if (geom::insphere(X[u[0]], X[u[1]], X[u[2]], X[u[3]], p) > 0) cavity.push_back(n);
+      if (geom::insphere(X[u[0]], X[u[1]], X[u[2]], X[u[3]], p) > 0) {
+        cavity.push_back(n);
+        mark_[n] = in_cavity;
+      }
     }
-  // star-shaped from p: drop (non-seed) tetrahedra whose outer faces p does not see from inside
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = 0; i < cavity.size() && !changed; ++i)
-      for (int f = 0; f < 4 && !changed; ++f) {
-        const Index n = nb[cavity[i]][f];
-        if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
-        const auto fv = face(cavity[i], f);
-        if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) < 0) continue;
-        if (std::find(seed.begin(), seed.end(), cavity[i]) != seed.end()) continue;  // p on it
-        cavity.erase(cavity.begin() + static_cast<std::ptrdiff_t>(i));
-        changed = true;
+  // star-shaped from p: drop (non-seed) tetrahedra whose outer faces p does not see from
+  // inside, keep what still hangs together from the seeds, until nothing changes
+  auto is_seed = [&](Index t) { return std::find(seed.begin(), seed.end(), t) != seed.end(); };
+  unsigned current = in_cavity;
+  for (;;) {
+    std::vector<Index> kept;
+    for (Index t : cavity) {
+      bool sees = true;
+      for (int f = 0; f < 4 && sees && !is_seed(t); ++f) {
+        if (marked(nb[t][f], current)) continue;
+        const auto fv = face(t, f);
+        sees = orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) < 0;
       }
-    if (!changed) break;
-    // what is left must hang together from the seeds
-    std::vector<Index> kept = seed;
-    for (std::size_t i = 0; i < kept.size(); ++i)
+      if (sees) kept.push_back(t);
+    }
+    if (kept.size() == cavity.size()) break;
+    const unsigned in_kept = new_stamp();
+    for (Index t : kept) mark_[t] = in_kept;
+    const unsigned reached = new_stamp();
+    std::vector<Index> front = seed;
+    for (Index t : seed) mark_[t] = reached;
+    for (std::size_t i = 0; i < front.size(); ++i)
       for (int f = 0; f < 4; ++f) {
-        const Index n = nb[kept[i]][f];
-        if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end() && std::find(kept.begin(), kept.end(), n) == kept.end() &&
-            !is_constrained(kept[i], f))
-          kept.push_back(n);
+        const Index n = nb[front[i]][f];
+        if (n < 0 || !marked(n, in_kept) || is_constrained(front[i], f)) continue;
+        mark_[n] = reached;
+        front.push_back(n);
       }
-    cavity = std::move(kept);
+    cavity = std::move(front);
+    current = reached;
   }
+  const unsigned final_mark = new_stamp();
+  for (Index t : cavity) mark_[t] = final_mark;
   std::vector<Tet> fresh;
   for (Index t : cavity)
     for (int f = 0; f < 4; ++f) {
       const Index n = nb[t][f];
-      if (n >= 0 && std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      if (marked(n, final_mark)) continue;
       const auto fv = face(t, f);
       if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) >= 0) continue;  // a seed face p lies on
       Tet m = tet[t];

@@ -10,6 +10,7 @@
 // pass) are the faces with no neighbour plus any face in `constrained`: no transformation
 // crosses or removes them.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <unordered_set>
@@ -90,6 +91,16 @@ class TetComplex {
 
  private:
   std::vector<Index> free_;
+  // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
+  // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
+  mutable std::vector<unsigned> mark_;
+  mutable unsigned stamp_ = 0;
+  unsigned new_stamp() const {
+    mark_.resize(tet.size(), 0);
+    if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
+    return stamp_;
+  }
+  bool marked(Index t, unsigned s) const { return t >= 0 && static_cast<std::size_t>(t) < mark_.size() && mark_[t] == s; }
   // The tetrahedra whose closure holds p, from t0 (which does) across the faces p lies on;
   // false when p is on a node or on a constrained face.
   bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
