@@ -119,7 +119,16 @@ TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateS
   const std::int64_t want = opt.elements > 0 ? opt.elements : in.required_elements;
   if (opt.size <= 0 && want <= 0) throw InputError(in.source + ": no required number of elements (give -n or -s)");
   DecomposeOptions dopt;
-  if (opt.progress) dopt.progress = [&](double x) { return opt.progress(0.2 * x); };
+  // progress: decomposition to 0.2, each filling of the cells to 0.8 (a calibration round
+  // starts again from 0.2: the fraction shown never goes back), the optimisation to 1
+  GenerateOptions run = opt;
+  double shown = 0;
+  if (opt.progress)
+    run.progress = [&](double x) {
+      shown = std::max(shown, x);
+      return opt.progress(shown);
+    };
+  if (run.progress) dopt.progress = [&](double x) { return run.progress(0.2 * x); };
   const Decomposition d = decompose(in, dopt);
   st.init_geom = d.stats.prepare_seconds;
   st.bisect = d.stats.bisect_seconds;
@@ -133,7 +142,7 @@ TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateS
   // 6.11 and A2: the ideal spacing; the count it gives is then corrected once, the count going
   // with 1 / Np^3 (real meshes hold more tetrahedra than V / (Np^3 / 8))
   double np = opt.size > 0 ? opt.size : std::cbrt(8 * volume / static_cast<double>(want));
-  Built b = fill_cells(d, np, opt, st);
+  Built b = fill_cells(d, np, run, st);
   double used = np;
   const auto miss = [&](const Built& x) { return std::abs(static_cast<double>(x.tets.size()) - static_cast<double>(want)); };
   // corrections, the closest count winning: a cube-root step while the counts lie on one side
@@ -151,7 +160,7 @@ TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateS
     const double last = np;
     np = lo > 0 && hi > 0 ? std::sqrt(lo * hi) : np * std::cbrt(ratio);
     if (std::abs(np / last - 1) < 1e-3) break;
-    Built again = fill_cells(d, np, opt, st);  // times add up over the rounds
+    Built again = fill_cells(d, np, run, st);  // times add up over the rounds
     note(np, again.tets.size());
     // a round that gains little means the count is held by the boundary (an STL's many
     // facets each need their triangles): stop rather than mesh again and again
@@ -178,7 +187,7 @@ TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateS
   }
   const std::vector<fill::Tet> tets = cx.tets();
   const std::vector<Index> region = cx.tags();
-  if (opt.progress && !opt.progress(1.0)) throw Cancelled();
+  if (run.progress && !run.progress(1.0)) throw Cancelled();
   st.optimize = since(t_opt);
   // the mesh: used nodes only, in their order (dead model nodes, skipped nodes and removed
   // helpers drop out)
