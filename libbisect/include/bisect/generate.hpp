@@ -20,6 +20,10 @@ struct GenerateOptions {
   double size = 0;            // an absolute spacing Np instead of R, when > 0
   int optimize_passes = 1;    // global min-max transformation passes (7.5)
   int smooth_passes = 2;      // Laplace smoothing passes over interior nodes
+  // exactly coplanar neighbouring triangles (STL, OFF) merged into polygon faces first, so
+  // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
+  // number the merged faces
+  bool merge_coplanar = true;
   bool delaunay_insertion = true;   // Delaunay cavities, else the thesis's min-max (cell_fill.hpp)
   std::function<bool(double)> progress;  // fraction done; return false to cancel
 };

@@ -8,6 +8,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "domain/merge_facets.hpp"
 #include "fill/cell_fill.hpp"
 #include "fill/cell_nodes.hpp"
 #include "fill/smooth3d.hpp"
@@ -113,9 +114,10 @@ void boundary_triangles(const PolyhedralModel& m, const mesh2d::FaceGrids& g, Te
 
 }  // namespace
 
-TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateStats* stats) {
+TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, GenerateStats* stats) {
   const auto t_all = Clock::now();
   GenerateStats st;
+  const PolyInput in = opt.merge_coplanar ? merge_coplanar_triangles(original) : original;
   const std::int64_t want = opt.elements > 0 ? opt.elements : in.required_elements;
   if (opt.size <= 0 && want <= 0) throw InputError(in.source + ": no required number of elements (give -n or -s)");
   DecomposeOptions dopt;
