@@ -1,6 +1,7 @@
 #include "fill/cell_fill.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -57,6 +58,34 @@ bool collapse_helper(TetComplex& cx, Index v) {
   return true;
 }
 
+// Biased randomised insertion order (Amenta, Choi and Rote): the nodes shuffled, then taken in
+// rounds of doubling size, each round sorted along a Morton curve. Random order keeps the
+// cavities small on average (the first nodes, inserted into the star of long thin tetrahedra,
+// would otherwise each take most of it); the sorting keeps the walks short.
+void brio_order(const std::vector<Vec3>& X, std::vector<Index>& v) {
+  if (v.size() < 8) return;
+  std::uint64_t state = 0x2545F4914F6CDD1Dull ^ v.size();
+  for (std::size_t i = v.size() - 1; i > 0; --i) {  // Fisher-Yates with xorshift
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    std::swap(v[i], v[state % (i + 1)]);
+  }
+  Vec3 lo = X[v[0]], hi = X[v[0]];
+  for (Index i : v) lo = lo.cwiseMin(X[i]), hi = hi.cwiseMax(X[i]);
+  const Vec3 span = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+  auto morton = [&](Index i) {
+    std::uint64_t code = 0;
+    const Vec3 q = (X[i] - lo).cwiseQuotient(span);
+    const std::uint64_t x = static_cast<std::uint64_t>(q.x() * 1023), y = static_cast<std::uint64_t>(q.y() * 1023), z = static_cast<std::uint64_t>(q.z() * 1023);
+    for (int b = 9; b >= 0; --b) code = (code << 3) | (((x >> b) & 1) << 2) | (((y >> b) & 1) << 1) | ((z >> b) & 1);
+    return code;
+  };
+  for (std::size_t begin = 0, size = 8; begin < v.size(); begin += size, size *= 2) {
+    const std::size_t end = std::min(v.size(), begin + size);
+    std::sort(v.begin() + static_cast<std::ptrdiff_t>(begin), v.begin() + static_cast<std::ptrdiff_t>(end),
+              [&](Index a, Index b) { return morton(a) < morton(b); });
+  }
+}
+
 }  // namespace
 
 std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
@@ -84,7 +113,9 @@ std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::a
   TetComplex cx(X);
   cx.build(std::move(tets));
   st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
-  // the other nodes, nearest the centre first, so that each walk starts close to its target
+  if (delaunay) brio_order(X, rest);
+  // the other nodes (min-max: nearest the centre first, so that each walk starts close to its
+  // target; Delaunay: in biased randomised rounds, see brio_order)
   Index last = 0;
   for (Index v : rest) {
     const std::vector<Index> made = delaunay ? cx.insert_delaunay(v, last) : cx.insert(v, last);

@@ -4,13 +4,17 @@
 // edge; nodes go on each of its faces by the 2D placement (edges at spacing Np, face interiors
 // by 2D shrinking), nodes closer than Np / 2 merged (short edges, narrowness); repeated until
 // the layer is empty. A layer thinner than Np / 2 gets one sheet of nodes through its middle and
-// ends the shrinking.
+// ends the shrinking. Every node is then moved by a small deterministic jitter (see
+// kNodeJitter) that breaks the co-spherical ties of the layers' regular grids.
 #pragma once
 #include <vector>
 
 #include "bisect/types.hpp"
 
 namespace bisect::fill {
+
+// The jitter's width, as a fraction of Np: each coordinate moves by up to half of it either way.
+inline constexpr double kNodeJitter = 0.1;
 
 // A convex polytope: its corners and its faces, each a loop of corner ids counter-clockwise
 // seen from outside, with the outward unit normal and offset (normal . x = offset).

@@ -51,28 +51,45 @@ struct Built {
   std::vector<Index> region;
   std::size_t boundary_nodes = 0;  // face-grid nodes: fixed
   mesh2d::FaceGrids grids;
+  std::vector<fill::Polytope> polys;         // per cell
+  std::vector<std::vector<Index>> interior;  // per cell: its interior nodes
 };
 
-// Face grids, interior nodes and the filled cells at spacing np.
-Built fill_cells(const Decomposition& d, double np, const GenerateOptions& opt, GenerateStats& st) {
+// Face grids and interior nodes at spacing np (7.4, 5.2): the nodes, not yet the tetrahedra.
+Built place_nodes(const Decomposition& d, double np, GenerateStats& st) {
   Built b;
-  auto t0 = Clock::now();
+  const auto t0 = Clock::now();
   mesh2d::FaceGridOptions fo;
   fo.size = np;
   b.grids = mesh2d::mesh_faces(d.model, fo);
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
-  std::vector<fill::Polytope> polys;
-  std::vector<std::vector<Index>> interior(d.cells.size());
+  b.interior.assign(d.cells.size(), {});
   for (std::size_t c = 0; c < d.cells.size(); ++c) {
-    polys.push_back(cell_polytope(d.model, d.cells[c]));
-    for (const Vec3& p : fill::shrink_cell_nodes(polys.back(), np)) {
+    b.polys.push_back(cell_polytope(d.model, d.cells[c]));
+    for (const Vec3& p : fill::shrink_cell_nodes(b.polys.back(), np)) {
       b.X.push_back(p);
-      interior[c].push_back(static_cast<Index>(b.X.size() - 1));
+      b.interior[c].push_back(static_cast<Index>(b.X.size() - 1));
     }
   }
   st.gen_nodes += since(t0);
-  t0 = Clock::now();
+  return b;
+}
+
+// The nodes that tetrahedra will use: model nodes off every live face (left by the cuts) do not
+// count. The count of tetrahedra goes with it.
+std::size_t used_nodes(const Built& b) {
+  std::vector<char> used(b.X.size(), 0);
+  for (const auto& tris : b.grids.face_tris)
+    for (const auto& t : tris) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  std::size_t n = 0;
+  for (std::size_t v = 0; v < b.boundary_nodes; ++v) n += used[v];
+  return n + (b.X.size() - b.boundary_nodes);
+}
+
+// Each cell filled (7.6) from its face grids and interior nodes.
+void fill_cells(const Decomposition& d, Built& b, const GenerateOptions& opt, GenerateStats& st) {
+  const auto t0 = Clock::now();
   for (std::size_t c = 0; c < d.cells.size(); ++c) {
     const ConvexCell& cell = d.cells[c];
     std::vector<std::array<Index, 3>> boundary;
@@ -82,7 +99,7 @@ Built fill_cells(const Decomposition& d, double np, const GenerateOptions& opt, 
     fill::CellFillStats cs;
     std::vector<fill::Tet> tets;
     try {
-      tets = fill::fill_convex_cell(b.X, boundary, interior[c], polys[c].centroid(), opt.delaunay_insertion, &cs);
+      tets = fill::fill_convex_cell(b.X, boundary, b.interior[c], b.polys[c].centroid(), opt.delaunay_insertion, &cs);
     } catch (const MeshingError& e) {
       throw MeshingError("convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1) + ": " + e.what());
     }
@@ -95,7 +112,6 @@ Built fill_cells(const Decomposition& d, double np, const GenerateOptions& opt, 
     if (opt.progress && !opt.progress(0.2 + 0.6 * static_cast<double>(c + 1) / static_cast<double>(d.cells.size()))) throw Cancelled();
   }
   st.gen_tets += since(t0);
-  return b;
 }
 
 // Boundary triangles of the mesh: the grids of the input faces (interfaces included), turned
@@ -141,34 +157,48 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.regions = static_cast<std::int64_t>(meshed.size());
   double volume = 0;
   for (const ConvexCell& c : d.cells) volume += cell_polytope(d.model, c).volume();
-  // 6.11 and A2: the ideal spacing; the count it gives is then corrected once, the count going
-  // with 1 / Np^3 (real meshes hold more tetrahedra than V / (Np^3 / 8))
+  // 6.11 and A2: the ideal spacing (real meshes hold more tetrahedra than V / (Np^3 / 8), so
+  // the count is corrected below)
   double np = opt.size > 0 ? opt.size : std::cbrt(8 * volume / static_cast<double>(want));
-  Built b = fill_cells(d, np, run, st);
+  // The count: the nodes are placed, the cells filled once, and the ratio of tetrahedra to nodes
+  // that gives (about 5 to 6.5) predicts the count at other spacings from their nodes alone,
+  // which costs a fraction of a fill. The spacing is corrected on that prediction (a cube-root
+  // step, then bisection in log Np once two spacings bracket R: on small models the count jumps
+  // with the segments per edge and the shrinking layers), the cells are filled again at the
+  // best spacing, and the closer of the two fillings is kept.
+  Built b = place_nodes(d, np, st);
+  fill_cells(d, b, run, st);
   double used = np;
-  const auto miss = [&](const Built& x) { return std::abs(static_cast<double>(x.tets.size()) - static_cast<double>(want)); };
-  // corrections, the closest count winning: a cube-root step while the counts lie on one side
-  // of the request, bisection (in log Np) once they bracket it; on small cells the count jumps
-  // with the number of segments per edge and of shrinking layers, hence the bracketing
-  double lo = 0, hi = 0;  // spacings known to give too many, too few tetrahedra
-  auto note = [&](double spacing, std::size_t count) {
-    if (count > static_cast<std::size_t>(want)) lo = std::max(lo, spacing);
+  const auto miss = [&](double count) { return std::abs(count - static_cast<double>(want)); };
+  // brackets: spacings known (lo) to give too many tetrahedra, (hi) too few
+  auto note = [&](double& lo, double& hi, double spacing, double count) {
+    if (count > static_cast<double>(want)) lo = std::max(lo, spacing);
     else hi = hi > 0 ? std::min(hi, spacing) : spacing;
   };
-  note(np, b.tets.size());
-  for (int round = 0; round < 6 && opt.size <= 0; ++round) {
-    const double ratio = static_cast<double>(b.tets.size()) / static_cast<double>(want);
-    if (std::abs(ratio - 1) <= 0.05) break;
-    const double last = np;
-    np = lo > 0 && hi > 0 ? std::sqrt(lo * hi) : np * std::cbrt(ratio);
-    if (std::abs(np / last - 1) < 1e-3) break;
-    Built again = fill_cells(d, np, run, st);  // times add up over the rounds
-    note(np, again.tets.size());
-    // a round that gains little means the count is held by the boundary (an STL's many
-    // facets each need their triangles): stop rather than mesh again and again
-    const bool gained = miss(again) < 0.9 * miss(b);
-    if (miss(again) < miss(b)) b = std::move(again), used = np;
-    if (!gained && !(lo > 0 && hi > 0)) break;
+  double lo = 0, hi = 0;
+  double last_fill = np, last_count = static_cast<double>(b.tets.size()), last_nodes = static_cast<double>(used_nodes(b));
+  note(lo, hi, np, last_count);
+  for (int fill_round = 0; fill_round < 3 && opt.size <= 0; ++fill_round) {
+    if (miss(static_cast<double>(b.tets.size())) <= 0.05 * static_cast<double>(want)) break;
+    const double per_node = last_count / std::max(last_nodes, 1.0);  // from the last filling
+    double plo = lo, phi = hi, trial = last_fill, predicted = last_count, best_np = -1, best_miss = 1e300;
+    for (int round = 0; round < 8; ++round) {
+      const double next = plo > 0 && phi > 0 ? std::sqrt(plo * phi) : trial * std::cbrt(predicted / static_cast<double>(want));
+      if (std::abs(next / trial - 1) < 1e-3) break;
+      trial = next;
+      GenerateStats scratch;
+      predicted = per_node * static_cast<double>(used_nodes(place_nodes(d, trial, scratch)));
+      st.gen_nodes += scratch.gen_nodes;
+      note(plo, phi, trial, predicted);
+      if (miss(predicted) < best_miss) best_miss = miss(predicted), best_np = trial;
+      if (miss(predicted) <= 0.03 * static_cast<double>(want)) break;
+    }
+    if (best_np < 0) break;
+    Built again = place_nodes(d, best_np, st);
+    fill_cells(d, again, run, st);
+    last_fill = best_np, last_count = static_cast<double>(again.tets.size()), last_nodes = static_cast<double>(used_nodes(again));
+    note(lo, hi, best_np, last_count);
+    if (miss(last_count) < miss(static_cast<double>(b.tets.size()))) b = std::move(again), used = best_np;
   }
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
   st.spacing = used;

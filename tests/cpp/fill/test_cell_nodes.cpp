@@ -20,6 +20,9 @@ Polytope box(double x, double y, double z) {
   return p;
 }
 
+// how far the jitter moves a node of spacing 0.1 along one axis, at most
+constexpr double kShift = 0.5 * kNodeJitter * 0.1 + 1e-12;
+
 double min_gap(const std::vector<Vec3>& pts) {
   double g = 1e300;
   for (std::size_t i = 0; i < pts.size(); ++i)
@@ -47,9 +50,9 @@ TEST(CellNodes, BoxGetsLayersInsideAtTheSpacing) {
   ASSERT_FALSE(nodes.empty());
   for (const Vec3& p : nodes) {
     const double d = std::min({p.x(), p.y(), p.z(), 1 - p.x(), 1 - p.y(), 1 - p.z()});
-    EXPECT_GT(d, np - 1e-9);  // layer 1 and deeper
+    EXPECT_GT(d, np - kShift);  // layer 1 and deeper
   }
-  EXPECT_GT(min_gap(nodes), 0.5 * np - 1e-12);
+  EXPECT_GT(min_gap(nodes), 0.5 * np - 2 * kShift * std::sqrt(3.0));
   // about one node per np^3 inside the first layer (0.8^3 / 0.001 = 512), within a factor 2
   EXPECT_GT(nodes.size(), 250u);
   EXPECT_LT(nodes.size(), 1100u);
@@ -59,8 +62,8 @@ TEST(CellNodes, ThinCellGetsOneSheetAndTinyCellNone) {
   const double np = 0.1;
   const std::vector<Vec3> sheet = shrink_cell_nodes(box(1, 1, 0.24), np);  // layer 1 is 0.04 thick
   ASSERT_FALSE(sheet.empty());
-  for (const Vec3& p : sheet) EXPECT_NEAR(p.z(), 0.12, 1e-9);
-  EXPECT_GT(min_gap(sheet), 0.5 * np - 1e-12);
+  for (const Vec3& p : sheet) EXPECT_NEAR(p.z(), 0.12, kShift);
+  EXPECT_GT(min_gap(sheet), 0.5 * np - 2 * kShift * std::sqrt(3.0));
   EXPECT_TRUE(shrink_cell_nodes(box(0.15, 0.15, 0.15), np).empty());
 }
 
@@ -76,8 +79,8 @@ TEST(CellNodes, SharpWedgeKeepsClearOfItsEdge) {
   const double np = 0.1;
   const std::vector<Vec3> nodes = shrink_cell_nodes(w, np);
   ASSERT_FALSE(nodes.empty());
-  for (const Vec3& p : nodes) EXPECT_GT(p.x(), 0.5 * np / std::tan(5.0 * M_PI / 180));
-  EXPECT_GT(min_gap(nodes), 0.5 * np - 1e-12);
+  for (const Vec3& p : nodes) EXPECT_GT(p.x(), 0.5 * np / std::tan(5.0 * M_PI / 180) - kShift);
+  EXPECT_GT(min_gap(nodes), 0.5 * np - 2 * kShift * std::sqrt(3.0));
 }
 
 }  // namespace
