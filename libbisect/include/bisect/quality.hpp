@@ -29,6 +29,9 @@ TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 // min-max criterion of the local transformations (thesis 7.5), which evaluates it millions of
 // times. Orientation is not judged: the callers check it exactly with orient3d.
 double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+// tan(Ω/2) of that smallest angle: increases with it, so comparisons may use it and skip the
+// arctangent (min_solid_angle = 2 atan of it).
+double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
 std::vector<TetQuality> element_quality(const TetMesh& mesh);

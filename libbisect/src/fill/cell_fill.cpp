@@ -48,7 +48,7 @@ bool collapse_helper(TetComplex& cx, Index v) {
         ok = false;
         break;
       }
-      worst = std::min(worst, tet_min_solid_angle(cx.X, m));
+      worst = std::min(worst, tet_angle_key(cx.X, m));
       fresh.push_back(m);
     }
     if (ok && worst > best) best = worst, best_fresh = std::move(fresh);

@@ -56,11 +56,13 @@ struct Built {
 };
 
 // Face grids and interior nodes at spacing np (7.4, 5.2): the nodes, not yet the tetrahedra.
-Built place_nodes(const Decomposition& d, double np, GenerateStats& st) {
+// `count_only`: the faces' nodes without their triangles, enough to count them.
+Built place_nodes(const Decomposition& d, double np, GenerateStats& st, bool count_only = false) {
   Built b;
   const auto t0 = Clock::now();
   mesh2d::FaceGridOptions fo;
   fo.size = np;
+  fo.nodes_only = count_only;
   b.grids = mesh2d::mesh_faces(d.model, fo);
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
@@ -78,13 +80,15 @@ Built place_nodes(const Decomposition& d, double np, GenerateStats& st) {
 
 // The nodes that tetrahedra will use: model nodes off every live face (left by the cuts) do not
 // count. The count of tetrahedra goes with it.
-std::size_t used_nodes(const Built& b) {
-  std::vector<char> used(b.X.size(), 0);
-  for (const auto& tris : b.grids.face_tris)
-    for (const auto& t : tris) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+std::size_t used_nodes(const PolyhedralModel& m, const Built& b) {
+  std::vector<char> used(m.nodes.size(), 0);
+  for (const ModelFace& f : m.faces)
+    if (f.alive)
+      for (const auto& loop : f.loops)
+        for (Index v : loop) used[v] = 1;
   std::size_t n = 0;
-  for (std::size_t v = 0; v < b.boundary_nodes; ++v) n += used[v];
-  return n + (b.X.size() - b.boundary_nodes);
+  for (char u : used) n += u;
+  return n + (b.X.size() - m.nodes.size());
 }
 
 // Each cell filled (7.6) from its face grids and interior nodes.
@@ -176,7 +180,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
     else hi = hi > 0 ? std::min(hi, spacing) : spacing;
   };
   double lo = 0, hi = 0;
-  double last_fill = np, last_count = static_cast<double>(b.tets.size()), last_nodes = static_cast<double>(used_nodes(b));
+  double last_fill = np, last_count = static_cast<double>(b.tets.size()), last_nodes = static_cast<double>(used_nodes(d.model, b));
   note(lo, hi, np, last_count);
   for (int fill_round = 0; fill_round < 3 && opt.size <= 0; ++fill_round) {
     if (miss(static_cast<double>(b.tets.size())) <= 0.05 * static_cast<double>(want)) break;
@@ -187,7 +191,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
       if (std::abs(next / trial - 1) < 1e-3) break;
       trial = next;
       GenerateStats scratch;
-      predicted = per_node * static_cast<double>(used_nodes(place_nodes(d, trial, scratch)));
+      predicted = per_node * static_cast<double>(used_nodes(d.model, place_nodes(d, trial, scratch, true)));
       st.gen_nodes += scratch.gen_nodes;
       note(plo, phi, trial, predicted);
       if (miss(predicted) < best_miss) best_miss = miss(predicted), best_np = trial;
@@ -196,7 +200,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
     if (best_np < 0) break;
     Built again = place_nodes(d, best_np, st);
     fill_cells(d, again, run, st);
-    last_fill = best_np, last_count = static_cast<double>(again.tets.size()), last_nodes = static_cast<double>(used_nodes(again));
+    last_fill = best_np, last_count = static_cast<double>(again.tets.size()), last_nodes = static_cast<double>(used_nodes(d.model, again));
     note(lo, hi, best_np, last_count);
     if (miss(last_count) < miss(static_cast<double>(b.tets.size()))) b = std::move(again), used = best_np;
   }

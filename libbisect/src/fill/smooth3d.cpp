@@ -24,7 +24,7 @@ std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, 
           }
       const Vec3 old = X[v], target = sum / static_cast<double>(seen.size());
       double before = 1e300;
-      for (Index t : around[v]) before = std::min(before, tet_min_solid_angle(X, tets[t]));
+      for (Index t : around[v]) before = std::min(before, tet_angle_key(X, tets[t]));
       X[v] = target;
       bool ok = true;
       double after = 1e300;
@@ -33,7 +33,7 @@ std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, 
           ok = false;
           break;
         }
-        after = std::min(after, tet_min_solid_angle(X, tets[t]));
+        after = std::min(after, tet_angle_key(X, tets[t]));
       }
       if (ok && after >= before) ++moves;
       else X[v] = old;

@@ -21,14 +21,14 @@ FaceKey face_key(Index a, Index b, Index c) {
 
 bool positive(const std::vector<Vec3>& X, const Tet& t) { return orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) > 0; }
 
-double tet_min_solid_angle(const std::vector<Vec3>& X, const Tet& t) { return min_solid_angle(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
+double tet_angle_key(const std::vector<Vec3>& X, const Tet& t) { return min_solid_angle_tan_half(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
 
 void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   tet = std::move(tets);
   tag = std::move(tags);
   tag.resize(tet.size(), 0);
   q.resize(tet.size());
-  for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_min_solid_angle(X, tet[t]);
+  for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_angle_key(X, tet[t]);
   nb.assign(tet.size(), {-1, -1, -1, -1});
   alive.assign(tet.size(), 1);
   free_.clear();
@@ -59,7 +59,7 @@ std::vector<Tet> TetComplex::tets() const {
 
 void TetComplex::refresh_quality() {
   for (std::size_t t = 0; t < tet.size(); ++t)
-    if (alive[t]) q[t] = tet_min_solid_angle(X, tet[t]);
+    if (alive[t]) q[t] = tet_angle_key(X, tet[t]);
 }
 
 std::vector<Index> TetComplex::tags() const {
@@ -130,14 +130,14 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       nb[id] = {-1, -1, -1, -1};
       alive[id] = 1;
       tag[id] = inherited;
-      q[id] = tet_min_solid_angle(X, t);
+      q[id] = tet_angle_key(X, t);
     } else {
       id = static_cast<Index>(tet.size());
       tet.push_back(t);
       nb.push_back({-1, -1, -1, -1});
       alive.push_back(1);
       tag.push_back(inherited);
-      q.push_back(tet_min_solid_angle(X, t));
+      q.push_back(tet_angle_key(X, t));
     }
     ids.push_back(id);
   }
@@ -358,7 +358,7 @@ bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& 
     Tet m = tet[t];
     m[corner_of(t, c)] = e;
     if (!positive(X, m)) return false;  // the segment between the apexes misses the face
-    after = std::min(after, tet_min_solid_angle(X, m));
+    after = std::min(after, tet_angle_key(X, m));
     fresh.push_back(m);
   }
   const double before = std::min(q[t], q[n]);
@@ -402,7 +402,7 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
           if (orient3d(A, B, C, X[a]) != sign || orient3d(A, B, C, X[b]) != -sign) continue;
           const Tet ta = sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a};
           const Tet tb = sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b};
-          const double worst = std::min({l, r, tet_min_solid_angle(X, ta), tet_min_solid_angle(X, tb)});
+          const double worst = std::min({l, r, tet_angle_key(X, ta), tet_angle_key(X, tb)});
           if (worst > best[i * k + j]) best[i * k + j] = worst, split[i * k + j] = static_cast<int>(m);
         }
       }

@@ -43,7 +43,7 @@ class TetComplex {
   std::vector<Tet> nb;
   std::vector<char> alive;
   std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
-  std::vector<double> q;   // per tetrahedron: its smallest solid angle, the min-max criterion
+  std::vector<double> q;   // per tetrahedron: tet_angle_key, the min-max criterion
   std::unordered_set<FaceKey, FaceKeyHash> constrained;
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
@@ -107,13 +107,16 @@ class TetComplex {
   bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
   bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
   static constexpr std::size_t kMaxRing = 7;
-  // Edge removal is tried only where a tetrahedron's smallest solid angle is below this (sr;
-  // the regular tetrahedron's is 0.551): above it the gain is small and the cost is not.
-  static constexpr double kEdgeRemovalBelow = 0.2;
+  // Edge removal is tried only where a tetrahedron's smallest solid angle is below 0.2 sr (the
+  // regular tetrahedron's is 0.551): above it the gain is small and the cost is not. As a key:
+  // tan(0.1).
+  static constexpr double kEdgeRemovalBelow = 0.10033467208545055;
 };
 
 // Positive orientation test of a tetrahedron given by node ids.
 bool positive(const std::vector<Vec3>& X, const Tet& t);
-double tet_min_solid_angle(const std::vector<Vec3>& X, const Tet& t);
+// The min-max criterion's key: tan(Ω/2) of the smallest solid angle Ω, which orders tetrahedra
+// as Ω does without an arctangent.
+double tet_angle_key(const std::vector<Vec3>& X, const Tet& t);
 
 }  // namespace bisect::fill

@@ -50,7 +50,7 @@ double angle_at(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a, degrees
 
 // One face: its loops in the plane frame with the shared edge nodes, filled, optimised, and its
 // interior nodes and triangles added to g.
-void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, FaceGrids& g) {
+void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, bool nodes_only, FaceGrids& g) {
   const ModelFace& f = model.faces[fi];
   const PlaneFrame frame(f.normal, model.nodes[f.loops[0][0]]);
   TriMesh2 m;
@@ -77,13 +77,13 @@ void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, 
   }
   const std::size_t boundary = m.nodes.size();
   try {
-    fill_region(m, loops, h, std::sqrt(3.0) / 4 * h * h, 0);
+    fill_region(m, loops, h, std::sqrt(3.0) / 4 * h * h, 0, nullptr, !nodes_only);
   } catch (const MeshingError& e) {
     throw MeshingError("face grid of model face " + std::to_string(fi + 1) + (f.source >= 0 ? " (input face " + std::to_string(f.source + 1) + ")" : " (a cut face)") + ": " + e.what());
   }
   m.fixed.assign(m.nodes.size(), 0);
   std::fill(m.fixed.begin(), m.fixed.begin() + static_cast<std::ptrdiff_t>(boundary), 1);
-  if (optimize) optimize_planar(m);
+  if (optimize && !nodes_only) optimize_planar(m);
   for (std::size_t v = boundary; v < m.nodes.size(); ++v) {
     g.nodes.push_back(frame.origin + m.nodes[v].x() * frame.e1 + m.nodes[v].y() * frame.e2);
     g.spacing.push_back(h);
@@ -102,7 +102,7 @@ FaceGrids mesh_once(const PolyhedralModel& model, double h, const FaceGridOption
   for (const ModelFace& f : model.faces) live += f.alive ? 1 : 0;
   for (std::size_t fi = 0; fi < model.faces.size(); ++fi) {
     if (!model.faces[fi].alive) continue;
-    mesh_face(model, static_cast<Index>(fi), h, opt.optimize, g);
+    mesh_face(model, static_cast<Index>(fi), h, opt.optimize, opt.nodes_only, g);
     g.triangles += static_cast<std::int64_t>(g.face_tris[fi].size());
     if (opt.progress && !opt.progress(static_cast<double>(++done) / static_cast<double>(live))) throw Cancelled();
   }

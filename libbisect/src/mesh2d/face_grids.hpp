@@ -24,6 +24,7 @@ struct FaceGridOptions {
   std::int64_t elements = 0;  // triangles over all live faces (counted within ~15% by calibration)
   double size = 0;            // the spacing h itself; when > 0 it is used and `elements` ignored
   bool optimize = true;       // swaps and smoothing (4.4) on each face, boundary nodes fixed
+  bool nodes_only = false;    // place the nodes only, no triangles (to count them cheaply)
   std::function<bool(double)> progress;  // fraction of faces done; return false to cancel
 };
 

@@ -17,7 +17,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 }  // namespace
 
 std::int64_t fill_region(TriMesh2& m, const std::vector<std::vector<Index>>& loops, double h, double element_area, Index region,
-                         FillTimes* times) {
+                         FillTimes* times, bool triangulate) {
   FillTimes local;
   FillTimes& t = times ? *times : local;
   const auto t0 = Clock::now();
@@ -37,6 +37,7 @@ std::int64_t fill_region(TriMesh2& m, const std::vector<std::vector<Index>>& loo
     }
   }
   t.nodes += since(t0);
+  if (!triangulate) return static_cast<std::int64_t>(pieces.size());
   const auto t1 = Clock::now();
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     bisection_triangulate(m.nodes, pieces[k], inside[k], m.tris);

@@ -18,8 +18,9 @@ namespace bisect::mesh2d {
 struct FillTimes {
   double nodes = 0, triangulate = 0;
 };
+// With `triangulate` false only the nodes are placed (what a count of nodes needs).
 std::int64_t fill_region(TriMesh2& m, const std::vector<std::vector<Index>>& loops, double h, double element_area, Index region,
-                         FillTimes* times = nullptr);
+                         FillTimes* times = nullptr, bool triangulate = true);
 
 // Vertex swapping and Laplace smoothing in turn (4.4), each opening moves for the other; fixed
 // nodes stay where they are.

@@ -25,6 +25,10 @@ bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y())
 }  // namespace
 
 double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return 2 * std::atan(min_solid_angle_tan_half(a, b, c, d));
+}
+
+double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   // Van Oosterom–Strackee on unit edge vectors at each corner:
   // tan(Ω/2) = |â·(b̂×ĉ)| / (1 + â·b̂ + â·ĉ + b̂·ĉ). The smallest corner angle of a tetrahedron is
   // below π (the four add up to at most 2π), so its
@@ -48,7 +52,7 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
     flat = false;
     best = std::min(best, num / den);
   }
-  return flat ? 0 : 2 * std::atan(best);
+  return flat ? 0 : best;
 }
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

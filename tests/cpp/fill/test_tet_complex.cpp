@@ -105,14 +105,14 @@ TEST(TetComplex, RandomInsertionsBothWaysStayValidAndImprove) {
     expect_consistent(cx);
     EXPECT_NEAR(volume(cx), 1.0, 1e-12);
     double worst_before = 1e300;
-    for (const Tet& t : cx.tets()) worst_before = std::min(worst_before, tet_min_solid_angle(X, t));
+    for (const Tet& t : cx.tets()) worst_before = std::min(worst_before, tet_angle_key(X, t));
     const std::int64_t ops = cx.improve_all(1000000);
     EXPECT_GT(ops, 0);
     expect_consistent(cx);
     EXPECT_NEAR(volume(cx), 1.0, 1e-12);
     EXPECT_EQ(boundary_faces(cx), 12u);
     double worst_after = 1e300;
-    for (const Tet& t : cx.tets()) worst_after = std::min(worst_after, tet_min_solid_angle(X, t));
+    for (const Tet& t : cx.tets()) worst_after = std::min(worst_after, tet_angle_key(X, t));
     EXPECT_GE(worst_after, worst_before) << (delaunay ? "delaunay" : "minmax");
   }
 }
