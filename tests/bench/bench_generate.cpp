@@ -1,0 +1,243 @@
+// The 3D generator measured (thesis ch. 8), with Gmsh and TetGen in the same run:
+//
+//   build/bench/bench_generate [MAX_R]   (default 100000; 1000000 adds lug.stl at 10^6)
+//
+// 1. The CPU breakdown of thesis Tables 8.2.1-8.2.3 (box with a cavity, the two boxes of example
+//    2, the lug) at R = 10^3 .. MAX_R: seconds per stage from --stats.
+// 2. The STL models at R = 10^5 (and lug.stl at 10^6 when MAX_R allows) beside `gmsh -3 -algo
+//    del3d` (its surfaces reclassified and remeshed from the STL; its 3D stage timed from its
+//    log) and TetGen (`tetgen -pq1.414a`, on the same facets): tetrahedra, seconds, tetrahedra
+//    per second, peak memory, mean alpha and the share of tetrahedra under 10 degrees. Every
+//    tool runs as a child process (bisect-mesh too), timed and its peak memory read by wait4;
+//    each peer's size is corrected once towards our count.
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <spawn.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bisect/io.hpp"
+#include "bisect/quality.hpp"
+
+extern char** environ;
+
+using namespace bisect;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  bool ok = false;
+  double wall = 0, peak_mb = 0;
+  std::string out;  // stdout and stderr
+};
+
+// Runs argv, capturing its output in a file; wall time and peak resident memory from wait4.
+Run run(const std::vector<std::string>& argv, const fs::path& log) {
+  Run r;
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  pid_t pid;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ) != 0) return r;
+  int status = 0;
+  rusage ru{};
+  wait4(pid, &status, 0, &ru);
+  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.peak_mb = static_cast<double>(ru.ru_maxrss) / 1024.0;
+  r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.out = ss.str();
+  posix_spawn_file_actions_destroy(&fa);
+  return r;
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\":");
+  if (at == std::string::npos) return NAN;
+  return std::atof(json.c_str() + at + key.size() + 3);
+}
+
+struct Mesh {
+  bool ok = false;
+  long tets = 0;
+  double seconds = 0, peak_mb = 0, alpha = 0, below10 = 0;
+};
+
+void grade(const TetMesh& m, Mesh& out) {
+  const QualitySummary q = summarize_quality(element_quality(m));
+  out.tets = static_cast<long>(m.num_tets());
+  out.alpha = q.alpha.mean;
+  out.below10 = q.pct_dihedral_below_10;
+  out.ok = true;
+}
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / "bisect_bench_generate";
+  fs::create_directories(d);
+  return d;
+}
+
+std::string bisect_mesh() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return (exe.parent_path().parent_path() / "bin" / "bisect-mesh").string();
+}
+
+Mesh ours(const std::string& input, long r, std::string* stats_json = nullptr) {
+  Mesh m;
+  const fs::path out = scratch() / "ours.vtu", stats = scratch() / "ours.json";
+  const Run run_ = run({bisect_mesh(), input, "-n", std::to_string(r), "-o", out.string(), "--stats", stats.string()}, scratch() / "ours.log");
+  if (!run_.ok) {
+    std::fprintf(stderr, "bisect-mesh failed on %s: %s\n", input.c_str(), run_.out.c_str());
+    return m;
+  }
+  std::ifstream s(stats);
+  std::stringstream ss;
+  ss << s.rdbuf();
+  if (stats_json) *stats_json = ss.str();
+  m.seconds = json_number(ss.str(), "total");
+  m.peak_mb = run_.peak_mb;
+  grade(read_mesh(out.string()), m);
+  return m;
+}
+
+// Gmsh on the STL: surfaces reclassified (40 degrees) and remeshed, then Delaunay 3D; the 3D
+// stage's wall time from its log. One size correction towards `want` tetrahedra.
+Mesh gmsh(const std::string& stl, long want, double volume) {
+  Mesh m;
+  const fs::path geo = scratch() / "g.geo", msh = scratch() / "g.msh";
+  std::ofstream(geo) << "Merge \"" << stl << "\";\nClassifySurfaces{40*Pi/180, 1, 1, Pi};\nCreateGeometry;\n"
+                     << "Surface Loop(1) = Surface{:};\nVolume(1) = {1};\n";
+  double size = std::cbrt(6 * std::sqrt(2.0) * volume / static_cast<double>(want));
+  for (int round = 0; round < 2; ++round) {
+    const Run r = run({"gmsh", "-3", "-algo", "del3d", "-clmax", std::to_string(size), geo.string(), "-o", msh.string(), "-format", "msh2"},
+                      scratch() / "g.log");
+    if (!r.ok) return m;
+    std::smatch match;
+    if (!std::regex_search(r.out, match, std::regex("Done meshing 3D \\(Wall ([0-9.e+-]+)s"))) return m;
+    m.seconds = std::atof(match[1].str().c_str());
+    m.peak_mb = r.peak_mb;
+    grade(read_mesh(msh.string()), m);
+    size *= std::cbrt(static_cast<double>(m.tets) / static_cast<double>(want));
+  }
+  return m;
+}
+
+// TetGen on the same facets (written as .smesh): quality bound 1.414, volume bound from want.
+Mesh tetgen(const PolyInput& in, long want, double volume) {
+  Mesh m;
+  const fs::path smesh = scratch() / "t.smesh";
+  {
+    std::ofstream f(smesh);
+    f.precision(17);
+    f << in.nodes.size() << " 3 0 0\n";
+    for (std::size_t i = 0; i < in.nodes.size(); ++i) f << i + 1 << ' ' << in.nodes[i].x() << ' ' << in.nodes[i].y() << ' ' << in.nodes[i].z() << '\n';
+    f << in.faces.size() << " 0\n";
+    for (const PolyFace& face : in.faces) {
+      f << face.nodes.size();
+      for (Index v : face.nodes) f << ' ' << v + 1;
+      f << '\n';
+    }
+    f << "0\n0\n";
+  }
+  double a = 1.6 * volume / static_cast<double>(want);
+  for (int round = 0; round < 2; ++round) {
+    const Run r = run({"tetgen", "-pq1.414a" + std::to_string(a) + "Q", smesh.string()}, scratch() / "t.log");
+    if (!r.ok) return m;
+    m.seconds = r.wall;
+    m.peak_mb = r.peak_mb;
+    TetMesh t;
+    std::ifstream node(scratch() / "t.1.node"), ele(scratch() / "t.1.ele");
+    long n, dim, attr, marks;
+    node >> n >> dim >> attr >> marks;
+    t.nodes.resize(n);
+    for (long i = 0; i < n; ++i) {
+      long id;
+      double x, y, z, skip;
+      node >> id >> x >> y >> z;
+      for (long k = 0; k < attr + marks; ++k) node >> skip;
+      t.nodes[id - 1] = Vec3(x, y, z);
+    }
+    long ne, per, eattr;
+    ele >> ne >> per >> eattr;
+    for (long i = 0; i < ne; ++i) {
+      long id, v[4], skip;
+      ele >> id >> v[0] >> v[1] >> v[2] >> v[3];
+      for (long k = 0; k < eattr; ++k) ele >> skip;
+      const Index c[4] = {static_cast<Index>(v[0] - 1), static_cast<Index>(v[1] - 1), static_cast<Index>(v[3] - 1), static_cast<Index>(v[2] - 1)};
+      t.add_tet(c);  // TetGen's corners run the other way round
+    }
+    grade(t, m);
+    a *= static_cast<double>(m.tets) / static_cast<double>(want);
+  }
+  return m;
+}
+
+std::string cell(const Mesh& m) {
+  if (!m.ok) return "failed | - | - | - | - | -";
+  char b[160];
+  std::snprintf(b, sizeof b, "%ld | %.2f | %.0f | %.0f | %.3f | %.2f", m.tets, m.seconds, m.tets / m.seconds, m.peak_mb, m.alpha, m.below10);
+  return b;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const long max_r = argc > 1 ? std::atol(argv[1]) : 100000;
+  const fs::path shared = fs::path(BISECT_SHARED_DIR);
+  if (!fs::exists(shared / "models/stl/lug.stl")) {
+    std::printf("../shared is not here: nothing to measure\n");
+    return 0;
+  }
+  std::printf("## CPU seconds per stage (thesis Tables 8.2.1-8.2.3)\n\n");
+  std::printf("| model | R | tets | init_geom | bisect | gen_nodes | gen_tets | optimize | total |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const char* model : {"models/stl/box-cavity.stl", "examples/cube-cavity-adjacent-cube.poly", "models/stl/lug.stl"})
+    for (long r = 1000; r <= max_r && r <= 100000; r *= 10) {
+      std::string js;
+      const Mesh m = ours((shared / model).string(), r, &js);
+      if (!m.ok) continue;
+      std::printf("| %s | %ld | %ld | %.4f | %.4f | %.3f | %.3f | %.3f | %.3f |\n", fs::path(model).filename().c_str(), r, m.tets,
+                  json_number(js, "init_geom"), json_number(js, "bisect"), json_number(js, "gen_nodes"), json_number(js, "gen_tets"),
+                  json_number(js, "optimize"), json_number(js, "total"));
+      std::fflush(stdout);
+    }
+  std::printf("\n## Beside Gmsh (3D stage) and TetGen, same run\n\n");
+  std::printf("| model | R | ours tets | s | tets/s | MB | alpha | %% <10 | Gmsh tets | s | tets/s | MB | alpha | %% <10 | "
+              "TetGen tets | s | tets/s | MB | alpha | %% <10 | time / Gmsh |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  struct Case {
+    const char* model;
+    long r;
+  };
+  std::vector<Case> cases = {{"lug", 100000}, {"flange", 100000}, {"plate-hole", 100000}, {"part", 100000}};
+  if (max_r >= 1000000) cases.push_back({"lug", 1000000});
+  for (const Case& c : cases) {
+    if (c.r > max_r) continue;
+    const std::string stl = (shared / "models/stl" / (std::string(c.model) + ".stl")).string();
+    const PolyInput in = read_polyhedral(stl);
+    const double volume = summarize(in).volume;
+    const Mesh o = ours(stl, c.r), g = gmsh(stl, o.ok ? o.tets : c.r, volume), t = tetgen(in, o.ok ? o.tets : c.r, volume);
+    std::printf("| %s | %ld | %s | %s | %s | %s |\n", c.model, c.r, cell(o).c_str(), cell(g).c_str(), cell(t).c_str(),
+                o.ok && g.ok ? std::to_string(o.seconds / g.seconds).substr(0, 5).c_str() : "-");
+    std::fflush(stdout);
+  }
+  return 0;
+}
