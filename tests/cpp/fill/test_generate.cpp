@@ -3,15 +3,19 @@
 // requested count; on the ../shared models when they are here.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <set>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "bisect/io.hpp"
+#include "bisect/polyhedral_model.hpp"
 #include "bisect/shared_models.hpp"
 #include "bisect/validate.hpp"
+#include "generated_solids.hpp"
 #include "poly_shapes.hpp"
 
 namespace bisect {
@@ -118,6 +122,36 @@ TEST(Generate, OptionsErrorsAndCancel) {
   int calls = 0;
   opt.progress = [&](double) { return ++calls < 2; };
   EXPECT_THROW(generate_mesh(in, opt), Cancelled);
+}
+
+// Random CSG solids (unions of boxes and rotated prisms, some hollow): every one that decomposes
+// meshes into a valid mesh of its volume. BISECT_RANDOM_SOLIDS overrides the count (default 60).
+TEST(Generate, RandomCsgSolids) {
+  const char* env = std::getenv("BISECT_RANDOM_SOLIDS");
+  const int n = env ? std::atoi(env) : 60;
+  int meshed = 0, not_decomposed = 0;
+  for (int seed = 1; seed <= n; ++seed) {
+    std::string what;
+    const PolyInput in = testing::random_csg_polyhedron(static_cast<std::uint64_t>(seed), &what, nullptr);
+    try {
+      decompose(in);
+    } catch (const Error&) {  // counted by the decomposition's own test
+      ++not_decomposed;
+      continue;
+    }
+    GenerateOptions opt;
+    opt.elements = 3000;
+    try {
+      const TetMesh m = generate_mesh(in, opt);
+      expect_sound(m, in, what);
+      ++meshed;
+    } catch (const Error& e) {
+      ADD_FAILURE() << what << ": " << e.what();
+    }
+    if (HasFailure()) break;
+  }
+  std::cout << "random CSG solids meshed: " << meshed << ", not decomposed: " << not_decomposed << "\n";
+  EXPECT_GE(meshed, n * 9 / 10);
 }
 
 class GenerateSharedModels : public ::testing::TestWithParam<std::string> {};
