@@ -31,8 +31,9 @@ struct MeshOptions {
   bool cells_only = false; // --cells-only: stop after the convex decomposition, write .poly cells
   std::int64_t elements = 0;  // -n (0: the input's R)
   double size = 0;            // -s: the nodal spacing itself, instead of -n
-  int optimize_passes = 1;    // --optimize PASSES: global min-max transformation passes
-  int smooth_passes = 2;      // --smooth PASSES: Laplace smoothing passes
+  int optimize_passes = 3;    // --optimize PASSES: global min-max transformation passes
+  int smooth_passes = 3;      // --smooth PASSES: Laplace smoothing passes
+  int sliver_rounds = 5;      // --slivers ROUNDS: sliver repair rounds
   bool delaunay_insertion = true;   // --insertion delaunay|minmax
   bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
   bool quiet = false;

@@ -24,8 +24,9 @@ const char* kUsage =
     "  -o OUTPUT       where the result goes\n"
     "  -n ELEMENTS     the required number of elements (default: the input's own R)\n"
     "  -s SIZE         the nodal spacing itself (an absolute element size) instead of -n\n"
-    "  --optimize N    passes of min-max local transformations over the whole mesh (default 1)\n"
-    "  --smooth N      passes of Laplace smoothing of interior nodes (default 2)\n"
+    "  --optimize N    passes of min-max local transformations over the whole mesh (default 3)\n"
+    "  --smooth N      passes of Laplace smoothing of interior nodes (default 3)\n"
+    "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 5)\n"
     "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
     "                  improvement after each node) or delaunay (Delaunay cavities, min-max\n"
     "                  improvement at the end)\n"
@@ -107,13 +108,13 @@ int main(int argc, char** argv) {
       std::string v;
       if (!value(&v) || (v != "minmax" && v != "delaunay")) return usage_error(a + " needs minmax or delaunay");
       mesh.delaunay_insertion = v == "delaunay";
-    } else if (a == "--optimize" || a == "--smooth") {
+    } else if (a == "--optimize" || a == "--smooth" || a == "--slivers") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number of passes");
       char* end = nullptr;
       const long n = std::strtol(v.c_str(), &end, 10);
       if (end == v.c_str() || *end != '\0' || n < 0 || n > 100) return usage_error(a + " needs a number of passes from 0 to 100, not '" + v + "'");
-      (a == "--optimize" ? mesh.optimize_passes : mesh.smooth_passes) = static_cast<int>(n);
+      (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(n);
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {

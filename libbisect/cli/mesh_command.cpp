@@ -50,6 +50,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.size = opt.size;
     go.optimize_passes = opt.optimize_passes;
     go.smooth_passes = opt.smooth_passes;
+    go.sliver_rounds = opt.sliver_rounds;
     go.delaunay_insertion = opt.delaunay_insertion;
     GenerateStats st;
     const TetMesh mesh = generate_mesh(in, go, &st);

@@ -1,14 +1,19 @@
 // The 3D generator measured (thesis ch. 8), with Gmsh and TetGen in the same run:
 //
-//   build/bench/bench_generate [MAX_R]   (default 100000; 1000000 adds lug.stl at 10^6)
+//   build/bench/bench_generate [MAX_R [OUT_DIR]]   (default 100000; 1000000 adds lug.stl at 10^6)
 //
 // 1. The CPU breakdown of thesis Tables 8.2.1-8.2.3 (box with a cavity, the two boxes of example
 //    2, the lug) at R = 10^3 .. MAX_R: seconds per stage from --stats.
-// 2. The STL models at R = 10^5 (and lug.stl at 10^6 when MAX_R allows) beside `gmsh -3 -algo
+// 2. The alpha distribution of Table 8.3.1 on the slender appendage at about 3,600 tetrahedra.
+// 3. Min-max against Delaunay on random points in a cube (Tables 8.3.2-8.3.3): our min-max
+//    insertion, our Delaunay insertion, and TetGen's Delaunay tetrahedralisation of the points.
+// 4. A scaling run on lug.stl from 10^3 to MAX_R tetrahedra, the fitted exponent, a PNG plot
+//    (through plot_generate.py) next to the CSV in OUT_DIR (default: the working directory).
+// 5. The STL models at R = 10^5 (and lug.stl at 10^6 when MAX_R allows) beside `gmsh -3 -algo
 //    del3d` (its surfaces reclassified and remeshed from the STL; its 3D stage timed from its
 //    log) and TetGen (`tetgen -pq1.414a`, on the same facets): tetrahedra, seconds, tetrahedra
 //    per second, peak memory, mean alpha and the share of tetrahedra under 10 degrees. Every
-//    tool runs as a child process (bisect-mesh too), timed and its peak memory read by wait4;
+//    tool runs as a child process (bisect-mesh too), timed, its peak memory polled from /proc;
 //    each peer's size is corrected once towards our count.
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -21,13 +26,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "bisect/io.hpp"
 #include "bisect/quality.hpp"
+#include "fill/tet_complex.hpp"
 
 extern char** environ;
 
@@ -42,7 +50,18 @@ struct Run {
   std::string out;  // stdout and stderr
 };
 
-// Runs argv, capturing its output in a file; wall time and peak resident memory from wait4.
+// The peak resident memory (VmHWM) of a running process, MB; 0 once it has gone.
+double vm_hwm_mb(pid_t pid) {
+  std::ifstream st("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(st, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
+  return 0;
+}
+
+// Runs argv, capturing its output in a file; wall time, and the peak resident memory polled
+// from /proc every 5 ms (wait4's ru_maxrss would report this bench's own size: a spawned child
+// inherits its parent's high-water mark on Linux).
 Run run(const std::vector<std::string>& argv, const fs::path& log) {
   Run r;
   std::vector<char*> args;
@@ -56,10 +75,11 @@ Run run(const std::vector<std::string>& argv, const fs::path& log) {
   const auto t0 = std::chrono::steady_clock::now();
   if (posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ) != 0) return r;
   int status = 0;
-  rusage ru{};
-  wait4(pid, &status, 0, &ru);
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    r.peak_mb = std::max(r.peak_mb, vm_hwm_mb(pid));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.peak_mb = static_cast<double>(ru.ru_maxrss) / 1024.0;
   r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   std::ifstream in(log);
   std::stringstream ss;
@@ -67,6 +87,19 @@ Run run(const std::vector<std::string>& argv, const fs::path& log) {
   r.out = ss.str();
   posix_spawn_file_actions_destroy(&fa);
   return r;
+}
+
+// TetGen's .ele tetrahedra (numbered from 1) added to m; TetGen's corners run the other way round.
+void read_tetgen_ele(std::istream& ele, TetMesh& m) {
+  long ne, per, eattr;
+  ele >> ne >> per >> eattr;
+  for (long i = 0; i < ne; ++i) {
+    long id, v[4], skip;
+    ele >> id >> v[0] >> v[1] >> v[2] >> v[3];
+    for (long k = 0; k < eattr; ++k) ele >> skip;
+    const Index c[4] = {static_cast<Index>(v[0] - 1), static_cast<Index>(v[1] - 1), static_cast<Index>(v[3] - 1), static_cast<Index>(v[2] - 1)};
+    m.add_tet(c);
+  }
 }
 
 double json_number(const std::string& json, const std::string& key) {
@@ -176,15 +209,7 @@ Mesh tetgen(const PolyInput& in, long want, double volume) {
       for (long k = 0; k < attr + marks; ++k) node >> skip;
       t.nodes[id - 1] = Vec3(x, y, z);
     }
-    long ne, per, eattr;
-    ele >> ne >> per >> eattr;
-    for (long i = 0; i < ne; ++i) {
-      long id, v[4], skip;
-      ele >> id >> v[0] >> v[1] >> v[2] >> v[3];
-      for (long k = 0; k < eattr; ++k) ele >> skip;
-      const Index c[4] = {static_cast<Index>(v[0] - 1), static_cast<Index>(v[1] - 1), static_cast<Index>(v[3] - 1), static_cast<Index>(v[2] - 1)};
-      t.add_tet(c);  // TetGen's corners run the other way round
-    }
+    read_tetgen_ele(ele, t);
     grade(t, m);
     a *= static_cast<double>(m.tets) / static_cast<double>(want);
   }
@@ -196,6 +221,58 @@ std::string cell(const Mesh& m) {
   char b[160];
   std::snprintf(b, sizeof b, "%ld | %.2f | %.0f | %.0f | %.3f | %.2f", m.tets, m.seconds, m.tets / m.seconds, m.peak_mb, m.alpha, m.below10);
   return b;
+}
+
+
+// n random points in the unit cube, with its corners first; triangulated by our insertion
+// (min-max or Delaunay, each followed by the min-max transformations) or by TetGen.
+std::vector<Vec3> random_points(int n, unsigned seed) {
+  std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.01, 0.99);
+  for (int i = 0; i < n; ++i) X.push_back({u(rng), u(rng), u(rng)});
+  return X;
+}
+
+TetMesh ours_on_points(const std::vector<Vec3>& X, bool delaunay) {
+  fill::TetComplex cx(X);
+  std::vector<fill::Tet> t = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+  for (fill::Tet& x : t)
+    if (!fill::positive(X, x)) std::swap(x[0], x[1]);
+  cx.build(t);
+  Index last = 0;
+  for (Index v = 8; v < static_cast<Index>(X.size()); ++v) {
+    const auto made = delaunay ? cx.insert_delaunay(v, last) : cx.insert(v, last);
+    if (made.empty()) continue;
+    last = made.front();
+    if (!delaunay) {
+      std::vector<std::pair<Index, int>> q;
+      for (Index m : made)
+        for (int f = 0; f < 4; ++f) q.push_back({m, f});
+      cx.improve(q, 1 << 30);
+    }
+  }
+  cx.improve_all(1 << 30);
+  TetMesh m;
+  m.nodes = X;
+  for (const fill::Tet& x : cx.tets()) m.add_tet(x.data());
+  return m;
+}
+
+TetMesh tetgen_on_points(const std::vector<Vec3>& X) {
+  const fs::path node = scratch() / "p.node";
+  {
+    std::ofstream f(node);
+    f.precision(17);
+    f << X.size() << " 3 0 0\n";
+    for (std::size_t i = 0; i < X.size(); ++i) f << i + 1 << ' ' << X[i].x() << ' ' << X[i].y() << ' ' << X[i].z() << '\n';
+  }
+  TetMesh m;
+  if (!run({"tetgen", "-Q", node.string()}, scratch() / "p.log").ok) return m;
+  m.nodes = X;
+  std::ifstream ele(scratch() / "p.1.ele");
+  read_tetgen_ele(ele, m);
+  return m;
 }
 
 }  // namespace
@@ -219,6 +296,72 @@ int main(int argc, char** argv) {
                   json_number(js, "optimize"), json_number(js, "total"));
       std::fflush(stdout);
     }
+  // 8.3.1: the alpha distribution on the slender appendage at about 3,600 tetrahedra
+  {
+    const fs::path out = scratch() / "slender.vtu";
+    const Run r = run({bisect_mesh(), (shared / "models/stl/slender-appendage.stl").string(), "-n", "3600", "-o", out.string()}, scratch() / "s.log");
+    if (r.ok) {
+      const TetMesh m = read_mesh(out.string());
+      const QualitySummary q = summarize_quality(element_quality(m));
+      std::printf("\n## Alpha distribution on the slender appendage (Table 8.3.1), %zu tetrahedra, mean %.4f\n\n| alpha from | to | share |\n|---|---|---|\n",
+                  m.num_tets(), q.alpha.mean);
+      const double w = (q.alpha.hi - q.alpha.lo) / static_cast<double>(q.alpha.histogram.size());
+      for (std::size_t b = 0; b < q.alpha.histogram.size(); ++b)
+        std::printf("| %.4f | %.4f | %.4f |\n", q.alpha.lo + b * w, q.alpha.lo + (b + 1) * w,
+                    static_cast<double>(q.alpha.histogram[b]) / static_cast<double>(m.num_tets()));
+    }
+  }
+  // 8.3.2-8.3.3: random points
+  std::printf("\n## Random points in a cube (Tables 8.3.2-8.3.3): mean and histogram of the smallest solid angle (sr)\n\n");
+  std::printf("| nodes | method | tets | mean | 0-0.1 | 0.1-0.2 | 0.2-0.3 | 0.3-0.4 | 0.4-0.6 |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (int n : {10, 110, 510, 1010, 2020, 4010}) {
+    const std::vector<Vec3> X = random_points(n, 42u + static_cast<unsigned>(n));
+    const std::pair<const char*, TetMesh> meshes[] = {
+        {"min-max", ours_on_points(X, false)}, {"Delaunay + min-max", ours_on_points(X, true)}, {"TetGen Delaunay", tetgen_on_points(X)}};
+    for (const auto& [name, m] : meshes) {
+      if (m.num_tets() == 0) continue;
+      std::vector<double> bins(5, 0);
+      double mean = 0;
+      for (std::size_t t = 0; t < m.num_tets(); ++t) {
+        const double w = min_solid_angle(m.nodes[m.tet_node(t, 0)], m.nodes[m.tet_node(t, 1)], m.nodes[m.tet_node(t, 2)], m.nodes[m.tet_node(t, 3)]);
+        mean += w;
+        bins[w < 0.1 ? 0 : w < 0.2 ? 1 : w < 0.3 ? 2 : w < 0.4 ? 3 : 4] += 1;
+      }
+      const double k = static_cast<double>(m.num_tets());
+      std::printf("| %d | %s | %zu | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", n, name, m.num_tets(), mean / k, bins[0] / k, bins[1] / k,
+                  bins[2] / k, bins[3] / k, bins[4] / k);
+    }
+  }
+  // scaling on lug.stl
+  {
+    const std::string out_dir = argc > 2 ? argv[2] : ".";
+    const std::string csv = out_dir + "/generate_scaling.csv";
+    std::ofstream c(csv);
+    c << "model,r,tets,total_s,gen_nodes_s,gen_tets_s\n";
+    std::printf("\n## Scaling on lug.stl\n\n| R | tets | total s | gen_nodes s | gen_tets s |\n|---|---|---|---|---|\n");
+    std::vector<double> xs, ys;
+    for (long r : {1000L, 3000L, 10000L, 30000L, 100000L, 300000L, 1000000L}) {
+      if (r > max_r) break;
+      std::string js;
+      const Mesh m = ours((shared / "models/stl/lug.stl").string(), r, &js);
+      if (!m.ok) break;
+      c << "lug.stl," << r << ',' << m.tets << ',' << json_number(js, "total") << ',' << json_number(js, "gen_nodes") << ','
+        << json_number(js, "gen_tets") << '\n';
+      std::printf("| %ld | %ld | %.3f | %.3f | %.3f |\n", r, m.tets, json_number(js, "total"), json_number(js, "gen_nodes"), json_number(js, "gen_tets"));
+      std::fflush(stdout);
+      if (m.tets >= 5000) xs.push_back(std::log(static_cast<double>(m.tets))), ys.push_back(std::log(json_number(js, "total")));
+    }
+    c.close();
+    if (xs.size() >= 2) {
+      double mx = 0, my = 0;
+      for (std::size_t i = 0; i < xs.size(); ++i) mx += xs[i] / xs.size(), my += ys[i] / ys.size();
+      double sxy = 0, sxx = 0;
+      for (std::size_t i = 0; i < xs.size(); ++i) sxy += (xs[i] - mx) * (ys[i] - my), sxx += (xs[i] - mx) * (xs[i] - mx);
+      std::printf("\nfitted: total time ~ tets^%.2f (from 5,000 tetrahedra up)\n", sxy / sxx);
+    }
+    const std::string cmd = "/usr/bin/python3 '" + std::string(BISECT_BENCH_DIR) + "/plot_generate.py' '" + csv + "' '" + out_dir + "/generate_scaling.png'";
+    if (std::system(cmd.c_str()) == 0) std::printf("plot: %s/generate_scaling.png\n", out_dir.c_str());
+  }
   std::printf("\n## Beside Gmsh (3D stage) and TetGen, same run\n\n");
   std::printf("| model | R | ours tets | s | tets/s | MB | alpha | %% <10 | Gmsh tets | s | tets/s | MB | alpha | %% <10 | "
               "TetGen tets | s | tets/s | MB | alpha | %% <10 | time / Gmsh |\n");

@@ -1,20 +1,8 @@
 """Plot of bench_decomposition's CSV: time against faces, log-log, with the fitted exponents."""
 import csv
-import math
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-def fit(xs, ys):
-    lx = [math.log(x) for x in xs]
-    ly = [math.log(y) for y in ys]
-    n = len(lx)
-    mx, my = sum(lx) / n, sum(ly) / n
-    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+from plot_common import fit, plt
 
 
 def main(src, dst):

@@ -2,8 +2,8 @@
 // the required number of elements (6.11, A2: Np = cbrt(8 V / R)), face grids on every face of
 // every cell (5.2, shared across cells and interfaces), interior nodes by 3D convex shrinking
 // (7.4), the boundary-constrained local min-max triangulation of each cell (7.6), then the
-// local transformations over the whole mesh (7.5) and Laplace smoothing that never inverts an
-// element nor moves a boundary node.
+// local transformations over the whole mesh (7.5), Laplace smoothing that never inverts an
+// element nor moves a boundary node, and the repair of the slivers left (smooth3d.hpp).
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -18,8 +18,9 @@ namespace bisect {
 struct GenerateOptions {
   std::int64_t elements = 0;  // the thesis's R; 0: the input's own (its header), else -s
   double size = 0;            // an absolute spacing Np instead of R, when > 0
-  int optimize_passes = 1;    // global min-max transformation passes (7.5)
-  int smooth_passes = 2;      // Laplace smoothing passes over interior nodes
+  int optimize_passes = 3;    // global min-max transformation passes (7.5)
+  int smooth_passes = 3;      // Laplace smoothing passes over interior nodes, one after each of those
+  int sliver_rounds = 5;      // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
   // exactly coplanar neighbouring triangles (STL, OFF) merged into polygon faces first, so
   // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
   // number the merged faces
@@ -35,6 +36,11 @@ struct GenerateStats {
   std::int64_t helpers_removed = 0;   // of those, helpers removed again
   std::int64_t skipped_nodes = 0;     // interior nodes that fell on a face or node (not inserted)
   std::int64_t flips = 0;             // local transformations applied, all stages
+  std::int64_t sliver_moves = 0;      // node moves of the sliver repair
+  std::int64_t fillings = 0;          // times the cells were filled while the count was sought
+  // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the
+  // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
+  std::int64_t count_floor = 0;
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

@@ -1,33 +1,80 @@
 #include "fill/smooth3d.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geom/predicates.hpp"
 
 namespace bisect::fill {
+namespace {
 
-std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, std::size_t first_free, int passes) {
-  // tetrahedra around each free node, and its neighbours
-  std::vector<std::vector<Index>> around(X.size());
+constexpr double kPi = 3.14159265358979323846;
+
+// The tetrahedra around each node.
+std::vector<std::vector<Index>> incidence(std::size_t nodes, const std::vector<Tet>& tets, const std::vector<char>* alive) {
+  std::vector<std::vector<Index>> around(nodes);
   for (std::size_t t = 0; t < tets.size(); ++t)
-    for (Index v : tets[t])
-      if (static_cast<std::size_t>(v) >= first_free) around[v].push_back(static_cast<Index>(t));
+    if (!alive || (*alive)[t])
+      for (Index v : tets[t]) around[v].push_back(static_cast<Index>(t));
+  return around;
+}
+
+// The mean of the nodes sharing a tetrahedron with v.
+Vec3 neighbour_mean(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v) {
+  Vec3 sum = Vec3::Zero();
+  std::vector<Index> seen;
+  for (Index t : around)
+    for (Index w : tets[t])
+      if (w != v && std::find(seen.begin(), seen.end(), w) == seen.end()) {
+        seen.push_back(w);
+        sum += X[w];
+      }
+  return sum / static_cast<double>(std::max<std::size_t>(seen.size(), 1));
+}
+
+double star_worst(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around) {
+  double worst = -1;
+  for (Index t : around) {
+    const Tet& u = tets[t];
+    worst = std::max(worst, worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]));
+    if (worst >= 2) break;
+  }
+  return worst;
+}
+
+}  // namespace
+
+double worst_dihedral_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  if (geom::orient3d(a, b, c, d) <= 0) return 2;
+  const Vec3* p[4] = {&a, &b, &c, &d};
+  Vec3 n[4];
+  for (int i = 0; i < 4; ++i) {  // face i opposite corner i, its normal turned away from it
+    const Vec3 &u = *p[(i + 1) % 4], &v = *p[(i + 2) % 4], &w = *p[(i + 3) % 4];
+    n[i] = (v - u).cross(w - u);
+    if (n[i].dot(*p[i] - u) > 0) n[i] = -n[i];
+    const double len = n[i].norm();
+    if (!(len > 0)) return 1;
+    n[i] /= len;
+  }
+  double worst = -1;  // the dihedral angle at the edge of faces i and j has cosine -n_i . n_j
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) worst = std::max(worst, -n[i].dot(n[j]));
+  return worst;
+}
+
+std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<char>& fixed, int passes) {
+  const std::vector<std::vector<Index>> around = incidence(X.size(), tets, nullptr);
   std::size_t moves = 0;
   for (int pass = 0; pass < passes; ++pass)
-    for (std::size_t v = first_free; v < X.size(); ++v) {
-      if (around[v].empty()) continue;
-      Vec3 sum = Vec3::Zero();
-      std::vector<Index> seen;
-      for (Index t : around[v])
-        for (Index w : tets[t])
-          if (w != static_cast<Index>(v) && std::find(seen.begin(), seen.end(), w) == seen.end()) {
-            seen.push_back(w);
-            sum += X[w];
-          }
-      const Vec3 old = X[v], target = sum / static_cast<double>(seen.size());
-      double before = 1e300;
+    for (std::size_t v = 0; v < X.size(); ++v) {
+      if (fixed[v] || around[v].empty()) continue;
+      const Vec3 old = X[v], target = neighbour_mean(X, tets, around[v], static_cast<Index>(v));
+      double before = std::numeric_limits<double>::max();
       for (Index t : around[v]) before = std::min(before, tet_angle_key(X, tets[t]));
       X[v] = target;
       bool ok = true;
-      double after = 1e300;
+      double after = std::numeric_limits<double>::max();
       for (Index t : around[v]) {
         if (!positive(X, tets[t])) {
           ok = false;
@@ -39,6 +86,104 @@ std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, 
       else X[v] = old;
     }
   return moves;
+}
+
+std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed_nodes, double below_deg, int rounds) {
+  const double limit = std::cos(below_deg * kPi / 180);
+  std::vector<char> fixed = fixed_nodes;  // grows with the nodes inserted (free)
+  std::size_t total = 0;
+  for (int round = 0; round < rounds; ++round) {
+    const std::vector<std::vector<Index>> around = incidence(X.size(), cx.tet, &cx.alive);
+    std::size_t moved = 0;
+    std::vector<Index> touched, stuck;  // stuck: no move of a node improves them
+    for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+      if (!cx.alive[t]) continue;
+      const Tet& u = cx.tet[t];
+      if (worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) <= limit) continue;
+      double edge = 0;  // the tetrahedron's mean edge length sets the step
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
+      Index best_v = -1;
+      Vec3 best_p;
+      double best = 2;
+      for (int k = 0; k < 4; ++k) {
+        const Index v = u[k];
+        if (fixed[v]) continue;
+        const double base = star_worst(X, cx.tet, around[v]);
+        const Vec3 &a = X[u[(k + 1) % 4]], &b = X[u[(k + 2) % 4]], &c = X[u[(k + 3) % 4]];
+        Vec3 n = (b - a).cross(c - a);
+        if (n.dot(X[v] - a) < 0) n = -n;
+        if (n.norm() > 0) n.normalize();
+        const Vec3 old = X[v];
+        // off the opposite face's plane at four steps, the neighbours' mean, and eight fixed
+        // directions (the corners of a cube) at a quarter of the edge
+        std::vector<Vec3> candidates{old + 0.1 * edge * n, old + 0.2 * edge * n, old + 0.35 * edge * n, old + 0.5 * edge * n,
+                                     neighbour_mean(X, cx.tet, around[v], v)};
+        for (int c = 0; c < 8; ++c)
+          candidates.push_back(old + 0.25 * edge / std::sqrt(3.0) * Vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1));
+        for (const Vec3& p : candidates) {
+          X[v] = p;
+          const double w = star_worst(X, cx.tet, around[v]);
+          if (w < base - 1e-12 && w < best) best = w, best_v = v, best_p = p;
+        }
+        X[v] = old;
+      }
+      if (best_v < 0) {
+        stuck.push_back(static_cast<Index>(t));
+        continue;
+      }
+      X[best_v] = best_p;
+      ++moved;
+      touched.insert(touched.end(), around[best_v].begin(), around[best_v].end());
+    }
+    // the tetrahedra around moved nodes: their keys, then the transformations from their faces
+    std::vector<std::pair<Index, int>> queue;
+    for (Index t : touched) {
+      cx.q[t] = tet_angle_key(X, cx.tet[t]);
+      for (int f = 0; f < 4; ++f) queue.push_back({t, f});
+    }
+    cx.improve(std::move(queue), std::numeric_limits<std::int64_t>::max());
+    // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
+    // typical case) gets a new free node half an edge inside it, away from its largest face
+    // (the boundary face, when it has one), inserted with a Delaunay cavity, which takes the
+    // flat tetrahedron when its circumsphere holds the node; the next round moves that node
+    // where its tetrahedra are best.
+    std::size_t inserted = 0;
+    for (Index t : stuck) {
+      if (round + 1 >= rounds || !cx.alive[t]) continue;
+      const Tet u = cx.tet[t];
+      if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;
+      if (worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) <= limit) continue;
+      int face = 0;
+      double area = 0, edge = 0;
+      for (int f = 0; f < 4; ++f) {
+        const auto fv = cx.face(t, f);
+        const double a = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]).norm();
+        if (a > area) area = a, face = f;
+      }
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
+      const auto fv = cx.face(t, face);  // its normal points out of t
+      const Vec3 inward = -(X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]).normalized();
+      const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
+      X.push_back(here + 0.5 * edge * inward);
+      fixed.push_back(0);
+      const std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), t);
+      if (made.empty()) {  // on a face or node after all: leave it
+        X.pop_back();
+        fixed.pop_back();
+        continue;
+      }
+      ++inserted;
+      std::vector<std::pair<Index, int>> around_new;
+      for (Index m : made)
+        for (int f = 0; f < 4; ++f) around_new.push_back({m, f});
+      cx.improve(std::move(around_new), std::numeric_limits<std::int64_t>::max());
+    }
+    if (moved + inserted == 0) break;
+    total += moved + inserted;
+  }
+  return total;
 }
 
 }  // namespace bisect::fill

@@ -1,8 +1,19 @@
-// Laplace smoothing of a tetrahedral mesh's interior nodes (thesis 6.9.2, optimisation (2)):
-// each free node moves to the mean of its neighbours when every tetrahedron around it stays
-// positive and their smallest solid angle does not fall; nodes below `first_free` (the face
-// grids, on the boundary and on every face of every cell) never move.
+// Node moves that improve a tetrahedral mesh without changing its connectivity. Nodes marked
+// `fixed` (those on input faces and region interfaces) never move; every other node may (inside
+// the cells, and on the cut faces, which the mesh no longer keeps once the cells are joined).
+//
+// - Laplace smoothing (thesis 6.9.2, optimisation (2)): each free node moves to the mean of its
+//   neighbours when every tetrahedron around it stays positive and their smallest solid angle
+//   does not fall.
+// - Sliver repair: a tetrahedron with a small dihedral angle that the local transformations
+//   leave (typically a sliver: four nodes near one circle, which no flip among its neighbours
+//   improves) has one of its free nodes moved off the plane of the face opposite it, or to its
+//   neighbours' mean, whichever gives the tetrahedra around that node the largest smallest
+//   dihedral angle; one whose four nodes are all fixed gets a new free node half an edge inside
+//   it (a Delaunay insertion), which the next round moves; the transformations run again
+//   around every change.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "fill/tet_complex.hpp"
@@ -10,6 +21,14 @@
 namespace bisect::fill {
 
 // Returns the number of moves made.
-std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, std::size_t first_free, int passes);
+std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<char>& fixed, int passes);
+
+// Up to `rounds` rounds of moves (and insertions: X grows) on the tetrahedra whose smallest
+// dihedral angle is below `below_deg`. cx must work on X. Returns the moves and insertions made.
+std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds);
+
+// The cosine of a tetrahedron's smallest dihedral angle (1 for a flat one), 2 when it is not
+// positively oriented: smaller is better.
+double worst_dihedral_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 }  // namespace bisect::fill

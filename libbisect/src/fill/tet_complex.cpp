@@ -438,7 +438,7 @@ std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::
       continue;
     }
     // edge removal costs a small dynamic programme per edge: only around a poor tetrahedron
-    if (std::min(q[t], q[nb[t][f]]) >= kEdgeRemovalBelow) continue;
+    if (std::min(q[t], q[nb[t][f]]) >= edge_removal_below) continue;
     const auto fv = face(t, f);
     for (int e = 0; e < 3; ++e)
       if (try_edge_removal(t, fv[e], fv[(e + 1) % 3], queue)) {

@@ -45,6 +45,10 @@ class TetComplex {
   std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
   std::vector<double> q;   // per tetrahedron: tet_angle_key, the min-max criterion
   std::unordered_set<FaceKey, FaceKeyHash> constrained;
+  // Edge removal (a small dynamic programme per edge) is tried only where a tetrahedron's
+  // smallest solid angle is below this key (tet_angle_key); above it the gain is small and the
+  // cost is not. The default, tan(0.1), is Ω < 0.2 sr (the regular tetrahedron's is 0.551).
+  double edge_removal_below = 0.10033467208545055;
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
   // default to 0.
@@ -107,10 +111,6 @@ class TetComplex {
   bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
   bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
   static constexpr std::size_t kMaxRing = 7;
-  // Edge removal is tried only where a tetrahedron's smallest solid angle is below 0.2 sr (the
-  // regular tetrahedron's is 0.551): above it the gain is small and the cost is not. As a key:
-  // tan(0.1).
-  static constexpr double kEdgeRemovalBelow = 0.10033467208545055;
 };
 
 // Positive orientation test of a tetrahedron given by node ids.

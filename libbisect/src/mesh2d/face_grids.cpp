@@ -18,6 +18,7 @@ std::pair<Index, Index> edge_key(Index a, Index b) { return a < b ? std::make_pa
 // node's shortest edge, inner nodes graded between them.
 void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
   g.nodes = model.nodes;
+  g.face_of.assign(g.nodes.size(), -1);
   g.spacing.assign(model.nodes.size(), h);
   g.edge_nodes.clear();
   for (const ModelFace& f : model.faces) {
@@ -38,6 +39,7 @@ void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
     for (double f : graded_edge_fractions(len, sa, sb, h)) {
       g.nodes.push_back(p + (q - p) * f);
       g.spacing.push_back(edge_spacing_at(f * len, len, sa, sb, h));
+      g.face_of.push_back(-1);
       inner.push_back(static_cast<Index>(g.nodes.size() - 1));
     }
   }
@@ -87,6 +89,7 @@ void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, 
   for (std::size_t v = boundary; v < m.nodes.size(); ++v) {
     g.nodes.push_back(frame.origin + m.nodes[v].x() * frame.e1 + m.nodes[v].y() * frame.e2);
     g.spacing.push_back(h);
+    g.face_of.push_back(static_cast<Index>(fi));
     global.push_back(static_cast<Index>(g.nodes.size() - 1));
   }
   auto& out = g.face_tris[fi];

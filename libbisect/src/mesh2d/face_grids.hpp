@@ -32,6 +32,7 @@ struct FaceGrids {
   // model nodes first (the same ids), then edge nodes, then the faces' interior nodes
   std::vector<Vec3> nodes;
   std::vector<double> spacing;  // the spacing each node wants (interior nodes: h)
+  std::vector<Index> face_of;   // the model face whose interior holds each node; -1 for model and edge nodes
   // per model face (empty for dead faces): triangles counter-clockwise around the face's normal
   std::vector<std::vector<std::array<Index, 3>>> face_tris;
   // model edge (lo, hi) -> its inner nodes in order from lo to hi

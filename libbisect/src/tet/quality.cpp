@@ -29,25 +29,29 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 }
 
 double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  // Van Oosterom–Strackee on unit edge vectors at each corner:
-  // tan(Ω/2) = |â·(b̂×ĉ)| / (1 + â·b̂ + â·ĉ + b̂·ĉ). The smallest corner angle of a tetrahedron is
-  // below π (the four add up to at most 2π), so its
-  // denominator is positive and the ratio is monotone in Ω: the minimum ratio gives the minimum
-  // angle with one arctangent. The six edges are normalised once.
-  const std::array<Vec3, 4> p{a, b, c, d};
-  Vec3 u[4][4];
-  for (const auto& e : kTetEdge) {
-    const Vec3 n = (p[e[1]] - p[e[0]]).normalized();
-    u[e[0]][e[1]] = n;
-    u[e[1]][e[0]] = -n;
+  // Van Oosterom–Strackee at each corner, with x, y, z the unit vectors along its three edges:
+  // tan(Ω/2) = |x·(y×z)| / (1 + x·y + x·z + y·z). The triple product is 6V over the product of
+  // the three edge lengths, so one determinant and six lengths serve the four corners (this is
+  // the min-max criterion's key, the generator's hottest function). The smallest corner angle
+  // of a tetrahedron is below π (the four add up to at most 2π), so its denominator is positive
+  // and the ratio is monotone in Ω: the minimum ratio gives the minimum angle.
+  const Vec3 p[4] = {a, b, c, d};
+  Vec3 e[4][4];
+  double inv[4][4];
+  for (const auto& k : kTetEdge) {
+    e[k[0]][k[1]] = p[k[1]] - p[k[0]];
+    e[k[1]][k[0]] = -e[k[0]][k[1]];
+    const double len = e[k[0]][k[1]].norm();
+    inv[k[0]][k[1]] = inv[k[1]][k[0]] = len > 0 ? 1 / len : 0;
   }
+  const double six_v = std::abs(e[0][1].dot(e[0][2].cross(e[0][3])));
   double best = std::numeric_limits<double>::infinity();
   bool flat = true;
   for (int i = 0; i < 4; ++i) {
     const int j = (i + 1) % 4, k = (i + 2) % 4, l = (i + 3) % 4;
-    const Vec3 &x = u[i][j], &y = u[i][k], &z = u[i][l];
-    const double num = std::abs(x.dot(y.cross(z)));
-    const double den = 1 + x.dot(y) + x.dot(z) + y.dot(z);
+    const double ij = inv[i][j], ik = inv[i][k], il = inv[i][l];
+    const double num = six_v * ij * ik * il;
+    const double den = 1 + e[i][j].dot(e[i][k]) * ij * ik + e[i][j].dot(e[i][l]) * ij * il + e[i][k].dot(e[i][l]) * ik * il;
     if (den <= 0) continue;  // a corner of π or more: not the smallest
     flat = false;
     best = std::min(best, num / den);

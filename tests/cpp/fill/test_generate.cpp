@@ -166,6 +166,10 @@ TEST_P(GenerateSharedModels, ValidMeshesOfTheInputsVolume) {
     GenerateStats st;
     const TetMesh m = generate_mesh(in, opt, &st);
     expect_sound(m, in, GetParam() + " " + std::to_string(n));
+    // within 20% of R, unless the input's own facets need more tetrahedra than R
+    if (std::abs(static_cast<double>(m.num_tets()) - static_cast<double>(n)) > 0.2 * static_cast<double>(n))
+      EXPECT_GT(st.count_floor, n) << GetParam() << " " << n << ": " << m.num_tets() << " tetrahedra";
+    EXPECT_EQ(st.fillings >= 1 && st.fillings <= 3, true);
     RecordProperty("tets_" + std::to_string(n), std::to_string(m.num_tets()));
   }
 }
