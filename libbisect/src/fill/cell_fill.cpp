@@ -128,12 +128,7 @@ std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::a
     }
     ++st.inserted;
     last = made.front();
-    if (!delaunay) {
-      std::vector<std::pair<Index, int>> queue;
-      for (Index t : made)
-        for (int f = 0; f < 4; ++f) queue.push_back({t, f});
-      st.flips += cx.improve(std::move(queue), std::numeric_limits<std::int64_t>::max());
-    }
+    if (!delaunay) st.flips += cx.improve_around(made);
     if (!cx.alive[last]) last = 0;
   }
   if (delaunay) st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());

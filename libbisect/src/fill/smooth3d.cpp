@@ -33,14 +33,23 @@ Vec3 neighbour_mean(const std::vector<Vec3>& X, const std::vector<Tet>& tets, co
   return sum / static_cast<double>(std::max<std::size_t>(seen.size(), 1));
 }
 
+double tet_worst(const std::vector<Vec3>& X, const Tet& u) { return worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]); }
+
 double star_worst(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around) {
   double worst = -1;
   for (Index t : around) {
-    const Tet& u = tets[t];
-    worst = std::max(worst, worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]));
+    worst = std::max(worst, tet_worst(X, tets[t]));
     if (worst >= 2) break;
   }
   return worst;
+}
+
+// The mean edge length: the scale of a tetrahedron's repair steps.
+double mean_edge(const std::vector<Vec3>& X, const Tet& u) {
+  double edge = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
+  return edge;
 }
 
 }  // namespace
@@ -99,10 +108,8 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
     for (std::size_t t = 0; t < cx.tet.size(); ++t) {
       if (!cx.alive[t]) continue;
       const Tet& u = cx.tet[t];
-      if (worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) <= limit) continue;
-      double edge = 0;  // the tetrahedron's mean edge length sets the step
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
+      if (tet_worst(X, u) <= limit) continue;
+      const double edge = mean_edge(X, u);
       Index best_v = -1;
       Vec3 best_p;
       double best = 2;
@@ -137,12 +144,8 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
       touched.insert(touched.end(), around[best_v].begin(), around[best_v].end());
     }
     // the tetrahedra around moved nodes: their keys, then the transformations from their faces
-    std::vector<std::pair<Index, int>> queue;
-    for (Index t : touched) {
-      cx.q[t] = tet_angle_key(X, cx.tet[t]);
-      for (int f = 0; f < 4; ++f) queue.push_back({t, f});
-    }
-    cx.improve(std::move(queue), std::numeric_limits<std::int64_t>::max());
+    for (Index t : touched) cx.q[t] = tet_angle_key(X, cx.tet[t]);
+    cx.improve_around(touched);
     // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
     // typical case) gets a new free node half an edge inside it, away from its largest face
     // (the boundary face, when it has one), inserted with a Delaunay cavity, which takes the
@@ -153,20 +156,15 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
       if (round + 1 >= rounds || !cx.alive[t]) continue;
       const Tet u = cx.tet[t];
       if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;
-      if (worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) <= limit) continue;
-      int face = 0;
-      double area = 0, edge = 0;
+      if (tet_worst(X, u) <= limit) continue;
+      Vec3 outward = Vec3::Zero();  // the largest face's area normal (faces' normals point out of t)
       for (int f = 0; f < 4; ++f) {
         const auto fv = cx.face(t, f);
-        const double a = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]).norm();
-        if (a > area) area = a, face = f;
+        const Vec3 n = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]);
+        if (n.squaredNorm() > outward.squaredNorm()) outward = n;
       }
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
-      const auto fv = cx.face(t, face);  // its normal points out of t
-      const Vec3 inward = -(X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]).normalized();
       const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
-      X.push_back(here + 0.5 * edge * inward);
+      X.push_back(here - 0.5 * mean_edge(X, u) * outward.normalized());
       fixed.push_back(0);
       const std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), t);
       if (made.empty()) {  // on a face or node after all: leave it
@@ -175,10 +173,7 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
         continue;
       }
       ++inserted;
-      std::vector<std::pair<Index, int>> around_new;
-      for (Index m : made)
-        for (int f = 0; f < 4; ++f) around_new.push_back({m, f});
-      cx.improve(std::move(around_new), std::numeric_limits<std::int64_t>::max());
+      cx.improve_around(made);
     }
     if (moved + inserted == 0) break;
     total += moved + inserted;

@@ -1,6 +1,7 @@
 #include "fill/tet_complex.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
@@ -447,6 +448,14 @@ std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::
       }
   }
   return ops;
+}
+
+std::int64_t TetComplex::improve_around(const std::vector<Index>& tets) {
+  std::vector<std::pair<Index, int>> queue;
+  queue.reserve(4 * tets.size());
+  for (Index t : tets)
+    for (int f = 0; f < 4; ++f) queue.push_back({t, f});
+  return improve(std::move(queue), std::numeric_limits<std::int64_t>::max());
 }
 
 std::int64_t TetComplex::improve_all(std::int64_t max_ops) {

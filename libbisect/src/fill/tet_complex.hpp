@@ -86,6 +86,8 @@ class TetComplex {
   // its best (3-2 and the 4-4 of 7.5 are its rings of 3 and 4; larger rings reach further out
   // of the local minima 7.6.1 describes). Returns the number applied.
   std::int64_t improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops);
+  // improve() from every face of the given tetrahedra (new or changed ones), without a bound.
+  std::int64_t improve_around(const std::vector<Index>& tets);
   // improve() from every unconstrained interior face.
   std::int64_t improve_all(std::int64_t max_ops);
 

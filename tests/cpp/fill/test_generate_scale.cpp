@@ -15,7 +15,7 @@
 #include "bisect/polyhedral_model.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/shared_models.hpp"
-#include "bisect/validate.hpp"
+#include "fill/generate_checks.hpp"
 
 namespace bisect {
 namespace {
@@ -76,14 +76,7 @@ void check_at(const std::string& rel, std::int64_t n) {
   opt.elements = n;
   GenerateStats st;
   const TetMesh m = generate_mesh(in, opt, &st);
-  const auto found = validate(m);
-  EXPECT_TRUE(found.empty()) << rel << ": " << (found.empty() ? "" : found.front().message);
-  double volume = 0;
-  for (std::size_t t = 0; t < m.num_tets(); ++t) {
-    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)], &d = m.nodes[m.tet_node(t, 3)];
-    volume += (b - a).dot((c - a).cross(d - a)) / 6;
-  }
-  EXPECT_NEAR(volume, summarize(in).volume, 1e-9 * summarize(in).volume) << rel;
+  expect_sound(m, in, rel);
   const double count = static_cast<double>(m.num_tets());
   if (std::abs(count - static_cast<double>(n)) > 0.2 * static_cast<double>(n)) {
     EXPECT_GT(st.count_floor, n) << rel << ": " << count << " tetrahedra";
