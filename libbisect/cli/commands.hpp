@@ -35,6 +35,9 @@ struct MeshOptions {
   int smooth_passes = 3;      // --smooth PASSES: Laplace smoothing passes
   int sliver_rounds = 5;      // --slivers ROUNDS: sliver repair rounds
   bool delaunay_insertion = true;   // --insertion delaunay|minmax
+  int threads = 0;            // --threads N (0: one per core)
+  int order = 1;              // --order 1|2
+  bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
   bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
   bool quiet = false;
 };

@@ -24,9 +24,15 @@ const char* kUsage =
     "  -o OUTPUT       where the result goes\n"
     "  -n ELEMENTS     the required number of elements (default: the input's own R)\n"
     "  -s SIZE         the nodal spacing itself (an absolute element size) instead of -n\n"
+    "  --order K       1: 4-node tetrahedra (default); 2: 10-node tetrahedra, mid-edge nodes\n"
+    "                  at the middle of the straight edges\n"
     "  --optimize N    passes of min-max local transformations over the whole mesh (default 3)\n"
     "  --smooth N      passes of Laplace smoothing of interior nodes (default 3)\n"
     "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 5)\n"
+    "  --threads N     threads for the face grids and the cell fillings (default 0: one per\n"
+    "                  core); the mesh is the same for every N\n"
+    "  --boundary-flips  also re-triangulate the outer boundary within each input face by the\n"
+    "                  2-2 transformation (thesis 7.5; off by default)\n"
     "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
     "                  improvement after each node) or delaunay (Delaunay cavities, min-max\n"
     "                  improvement at the end)\n"
@@ -115,6 +121,19 @@ int main(int argc, char** argv) {
       const long n = std::strtol(v.c_str(), &end, 10);
       if (end == v.c_str() || *end != '\0' || n < 0 || n > 100) return usage_error(a + " needs a number of passes from 0 to 100, not '" + v + "'");
       (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(n);
+    } else if (a == "--boundary-flips") {
+      mesh.boundary_flips = true;
+    } else if (a == "--order") {
+      std::string v;
+      if (!value(&v) || (v != "1" && v != "2")) return usage_error(a + " needs 1 or 2");
+      mesh.order = v == "2" ? 2 : 1;
+    } else if (a == "--threads") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number of threads");
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end != '\0' || n < 0 || n > 1024) return usage_error(a + " needs a number of threads from 0 (one per core) to 1024, not '" + v + "'");
+      mesh.threads = static_cast<int>(n);
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {

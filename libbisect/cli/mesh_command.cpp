@@ -52,6 +52,9 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.smooth_passes = opt.smooth_passes;
     go.sliver_rounds = opt.sliver_rounds;
     go.delaunay_insertion = opt.delaunay_insertion;
+    go.threads = opt.threads;
+    go.order = opt.order;
+    go.boundary_flips = opt.boundary_flips;
     GenerateStats st;
     const TetMesh mesh = generate_mesh(in, go, &st);
     write_mesh(mesh, opt.output);

@@ -14,7 +14,8 @@
 //    log) and TetGen (`tetgen -pq1.414a`, on the same facets): tetrahedra, seconds, tetrahedra
 //    per second, peak memory, mean alpha and the share of tetrahedra under 10 degrees. Every
 //    tool runs as a child process (bisect-mesh too), timed, its peak memory polled from /proc;
-//    each peer's size is corrected once towards our count.
+//    each peer's size is corrected once towards our count. Ours runs twice: on every core (its
+//    default) and on one thread, which makes the same mesh.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -134,10 +135,12 @@ std::string bisect_mesh() {
   return (exe.parent_path().parent_path() / "bin" / "bisect-mesh").string();
 }
 
-Mesh ours(const std::string& input, long r, std::string* stats_json = nullptr) {
+// threads: bisect-mesh's --threads (0, its default: one per core)
+Mesh ours(const std::string& input, long r, std::string* stats_json = nullptr, int threads = 0) {
   Mesh m;
   const fs::path out = scratch() / "ours.vtu", stats = scratch() / "ours.json";
-  const Run run_ = run({bisect_mesh(), input, "-n", std::to_string(r), "-o", out.string(), "--stats", stats.string()}, scratch() / "ours.log");
+  const Run run_ = run({bisect_mesh(), input, "-n", std::to_string(r), "-o", out.string(), "--stats", stats.string(), "--threads", std::to_string(threads)},
+                       scratch() / "ours.log");
   if (!run_.ok) {
     std::fprintf(stderr, "bisect-mesh failed on %s: %s\n", input.c_str(), run_.out.c_str());
     return m;
@@ -363,9 +366,10 @@ int main(int argc, char** argv) {
     if (std::system(cmd.c_str()) == 0) std::printf("plot: %s/generate_scaling.png\n", out_dir.c_str());
   }
   std::printf("\n## Beside Gmsh (3D stage) and TetGen, same run\n\n");
+  std::printf("Ours on every core (the default) and on one thread (--threads 1; the same mesh), Gmsh on one.\n\n");
   std::printf("| model | R | ours tets | s | tets/s | MB | alpha | %% <10 | Gmsh tets | s | tets/s | MB | alpha | %% <10 | "
-              "TetGen tets | s | tets/s | MB | alpha | %% <10 | time / Gmsh |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "TetGen tets | s | tets/s | MB | alpha | %% <10 | ours 1 thread s | time / Gmsh | 1 thread / Gmsh |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   struct Case {
     const char* model;
     long r;
@@ -377,9 +381,11 @@ int main(int argc, char** argv) {
     const std::string stl = (shared / "models/stl" / (std::string(c.model) + ".stl")).string();
     const PolyInput in = read_polyhedral(stl);
     const double volume = summarize(in).volume;
-    const Mesh o = ours(stl, c.r), g = gmsh(stl, o.ok ? o.tets : c.r, volume), t = tetgen(in, o.ok ? o.tets : c.r, volume);
-    std::printf("| %s | %ld | %s | %s | %s | %s |\n", c.model, c.r, cell(o).c_str(), cell(g).c_str(), cell(t).c_str(),
-                o.ok && g.ok ? std::to_string(o.seconds / g.seconds).substr(0, 5).c_str() : "-");
+    const Mesh o = ours(stl, c.r), one = ours(stl, c.r, nullptr, 1), g = gmsh(stl, o.ok ? o.tets : c.r, volume),
+               t = tetgen(in, o.ok ? o.tets : c.r, volume);
+    auto ratio = [&](const Mesh& x) { return x.ok && g.ok ? std::to_string(x.seconds / g.seconds).substr(0, 5) : std::string("-"); };
+    std::printf("| %s | %ld | %s | %s | %s | %s | %s | %s |\n", c.model, c.r, cell(o).c_str(), cell(g).c_str(), cell(t).c_str(),
+                one.ok ? std::to_string(one.seconds).substr(0, 5).c_str() : "-", ratio(o).c_str(), ratio(one).c_str());
     std::fflush(stdout);
   }
   return 0;

@@ -21,11 +21,19 @@ struct GenerateOptions {
   int optimize_passes = 3;    // global min-max transformation passes (7.5)
   int smooth_passes = 3;      // Laplace smoothing passes over interior nodes, one after each of those
   int sliver_rounds = 5;      // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
+  int order = 1;              // 1: 4-node tetrahedra; 2: 10-node, mid-nodes on the straight edges
+  // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
+  // the face grids are already optimised and on the ../shared models it removed no more
+  // slivers than it made
+  bool boundary_flips = false;
   // exactly coplanar neighbouring triangles (STL, OFF) merged into polygon faces first, so
   // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
   // number the merged faces
   bool merge_coplanar = true;
   bool delaunay_insertion = true;   // Delaunay cavities, else the thesis's min-max (cell_fill.hpp)
+  // threads for the face grids and the cell fillings (0: one per core); the mesh is the same
+  // for every count, and the progress callback is called on the calling thread only
+  int threads = 0;
   std::function<bool(double)> progress;  // fraction done; return false to cancel
 };
 

@@ -62,4 +62,10 @@ struct TetMesh {
   std::vector<Index> neighbours() const;
 };
 
+// The 10-node mesh of a 4-node one: a node at the middle of every edge, shared by the
+// tetrahedra and triangles on that edge, in the kTetEdge and kTriEdge slots. Straight edges keep
+// the mid-nodes on the (planar) faces of a polyhedral domain. Corner nodes keep their indices;
+// the mid-nodes follow them. A mesh already of order 2 comes back unchanged.
+TetMesh to_second_order(const TetMesh& linear);
+
 }  // namespace bisect

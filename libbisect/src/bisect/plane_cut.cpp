@@ -89,7 +89,9 @@ CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea,
   // rejects the plane while the model is still untouched.
   auto prov = [&](int pt) { return sec.pts[pt].vertex >= 0 ? sec.pts[pt].vertex : -(pt + 2); };
   std::unordered_map<std::uint64_t, int> crossing;
-  for (std::size_t i = 0; i < sec.pts.size(); ++i)
+  // (point_used covers the points of the chosen polygons; the vertex checks above may have
+  // added points after it, which no polygon uses)
+  for (std::size_t i = 0; i < point_used.size(); ++i)
     if (point_used[i] && sec.pts[i].vertex < 0) crossing[edge_key(sec.pts[i].ea, sec.pts[i].eb)] = static_cast<int>(i);
   std::unordered_map<Index, std::vector<std::array<Index, 2>>> chords;  // provisional ids
   for (int p : chosen)
@@ -112,7 +114,7 @@ CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea,
 
   // 8. Insert: vertices into edges, chords into faces, polygons into the region.
   std::vector<Index> vert(sec.pts.size(), -1);
-  for (std::size_t i = 0; i < sec.pts.size(); ++i) {
+  for (std::size_t i = 0; i < point_used.size(); ++i) {
     if (!point_used[i]) continue;
     const SectionPoint& sp = sec.pts[i];
     vert[i] = sp.vertex >= 0 ? sp.vertex : m.insert_vertex_in_edge(sp.ea, sp.eb, sp.p);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <unordered_set>
 
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
@@ -14,6 +15,7 @@
 #include "fill/smooth3d.hpp"
 #include "fill/tet_complex.hpp"
 #include "mesh2d/face_grids.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect {
 namespace {
@@ -59,12 +61,13 @@ struct Built {
 
 // Face grids and interior nodes at spacing np (7.4, 5.2): the nodes, not yet the tetrahedra.
 // `count_only`: the faces' nodes without their triangles, enough to count them.
-Built place_nodes(const Decomposition& d, double np, GenerateStats& st, bool count_only = false) {
+Built place_nodes(const Decomposition& d, double np, int threads, GenerateStats& st, bool count_only = false) {
   Built b;
   const auto t0 = Clock::now();
   mesh2d::FaceGridOptions fo;
   fo.size = np;
   fo.nodes_only = count_only;
+  fo.threads = threads;
   b.grids = mesh2d::mesh_faces(d.model, fo);
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
@@ -123,11 +126,11 @@ double predict_tets(const NodeTally& n, double scale) { return scale * (6.2 * n.
 // bisection in log Np once two spacings bracket the count (on small models the count jumps with
 // the segments per edge and the shrinking layers, so it may not be met exactly). Only the nodes
 // are placed (a fraction of a filling).
-double search_spacing(const Decomposition& d, double start, double want, double scale, GenerateStats& st) {
+double search_spacing(const Decomposition& d, double start, double want, double scale, int threads, GenerateStats& st) {
   double lo = 0, hi = 0, trial = start, best = start, best_miss = 1e300;
   for (int round = 0; round < 10; ++round) {
     GenerateStats scratch;
-    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, scratch, true)), scale);
+    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, threads, scratch, true)), scale);
     st.gen_nodes += scratch.gen_nodes;
     const double miss = std::abs(predicted - want);
     if (miss < best_miss) best_miss = miss, best = trial;
@@ -141,44 +144,107 @@ double search_spacing(const Decomposition& d, double start, double want, double 
   return best;
 }
 
-// Each cell filled (7.6) from its face grids and interior nodes.
+// One cell's filling on its own copy of its nodes (so that cells fill in parallel): local ids
+// follow the global ones in order, so the filling is the one the global ids would give.
+struct CellFilling {
+  std::vector<Index> global;  // local node -> node of b.X (a helper: -1 until committed)
+  std::vector<Vec3> helper;   // the helper node, when one stayed in the mesh
+  std::vector<fill::Tet> tets;
+  fill::CellFillStats stats;
+};
+
+CellFilling fill_cell(const Decomposition& d, const Built& b, const std::vector<Vec3>& nodes, std::size_t c, bool delaunay) {
+  const ConvexCell& cell = d.cells[c];
+  CellFilling out;
+  std::vector<std::array<Index, 3>> boundary;
+  for (std::size_t k = 0; k < cell.faces.size(); ++k)
+    for (const auto& t : b.grids.face_tris[cell.faces[k]]) {
+      boundary.push_back(cell.outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]});
+      out.global.insert(out.global.end(), t.begin(), t.end());
+    }
+  out.global.insert(out.global.end(), b.interior[c].begin(), b.interior[c].end());
+  std::sort(out.global.begin(), out.global.end());
+  out.global.erase(std::unique(out.global.begin(), out.global.end()), out.global.end());
+  auto local = [&](Index v) { return static_cast<Index>(std::lower_bound(out.global.begin(), out.global.end(), v) - out.global.begin()); };
+  std::vector<Vec3> X;
+  X.reserve(out.global.size() + 1);
+  for (Index v : out.global) X.push_back(nodes[v]);
+  for (auto& t : boundary)
+    for (Index& v : t) v = local(v);
+  std::vector<Index> interior;
+  for (Index v : b.interior[c]) interior.push_back(local(v));
+  try {
+    out.tets = fill::fill_convex_cell(X, boundary, interior, b.polys[c].centroid(), delaunay, &out.stats);
+  } catch (const MeshingError& e) {
+    throw MeshingError("convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1) + ": " + e.what());
+  }
+  if (X.size() > out.global.size()) {  // the helper (7.6)
+    out.helper.push_back(X.back());
+    out.global.push_back(-1);
+  }
+  return out;
+}
+
+// Each cell filled (7.6) from its face grids and interior nodes, on opt.threads threads; the
+// tetrahedra join the mesh in cell order whatever the thread count.
 void fill_cells(const Decomposition& d, Built& b, const GenerateOptions& opt, GenerateStats& st) {
   const auto t0 = Clock::now();
-  for (std::size_t c = 0; c < d.cells.size(); ++c) {
-    const ConvexCell& cell = d.cells[c];
-    std::vector<std::array<Index, 3>> boundary;
-    for (std::size_t k = 0; k < cell.faces.size(); ++k)
-      for (const auto& t : b.grids.face_tris[cell.faces[k]])
-        boundary.push_back(cell.outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]});
-    fill::CellFillStats cs;
-    std::vector<fill::Tet> tets;
-    try {
-      tets = fill::fill_convex_cell(b.X, boundary, b.interior[c], b.polys[c].centroid(), opt.delaunay_insertion, &cs);
-    } catch (const MeshingError& e) {
-      throw MeshingError("convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1) + ": " + e.what());
-    }
-    b.helper_nodes += cs.helper;
-    b.helpers_removed += cs.helper_removed;
-    b.skipped_nodes += cs.skipped;
-    b.flips += cs.flips;
-    b.tets.insert(b.tets.end(), tets.begin(), tets.end());
-    b.region.resize(b.tets.size(), cell.source_region);
-    if (opt.progress && !opt.progress(0.2 + 0.6 * static_cast<double>(c + 1) / static_cast<double>(d.cells.size()))) throw Cancelled();
-  }
+  const std::size_t n = d.cells.size();
+  std::vector<CellFilling> made(n);
+  std::vector<std::size_t> largest_first(n);  // the long jobs first: no thread waits on one at the end
+  for (std::size_t c = 0; c < n; ++c) largest_first[c] = c;
+  std::stable_sort(largest_first.begin(), largest_first.end(), [&](std::size_t x, std::size_t y) { return b.interior[x].size() > b.interior[y].size(); });
+  const std::vector<Vec3> nodes = b.X;  // the cells read these while helpers join b.X
+  util::ordered_parallel(
+      n, util::thread_count(opt.threads), [&](std::size_t c) { made[c] = fill_cell(d, b, nodes, c, opt.delaunay_insertion); },
+      [&](std::size_t c) {
+        CellFilling& f = made[c];
+        if (!f.helper.empty()) {
+          b.X.push_back(f.helper.front());
+          f.global.back() = static_cast<Index>(b.X.size() - 1);
+        }
+        b.helper_nodes += f.stats.helper;
+        b.helpers_removed += f.stats.helper_removed;
+        b.skipped_nodes += f.stats.skipped;
+        b.flips += f.stats.flips;
+        for (fill::Tet t : f.tets) {
+          for (Index& v : t) v = f.global[v];
+          b.tets.push_back(t);
+        }
+        b.region.resize(b.tets.size(), d.cells[c].source_region);
+        f = {};
+        if (opt.progress && !opt.progress(0.2 + 0.6 * static_cast<double>(c + 1) / static_cast<double>(n))) throw Cancelled();
+      },
+      largest_first);
   st.gen_tets += since(t0);
 }
 
-// Boundary triangles of the mesh: the grids of the input faces (interfaces included), turned
-// outwards on the outer boundary; tagged with the input face.
-void boundary_triangles(const PolyhedralModel& m, const mesh2d::FaceGrids& g, TetMesh& out) {
+// Boundary triangles of the mesh, tagged with their input face: on the interfaces, the grids
+// of the input faces between two regions; on the outer boundary, the complex's faces (the 2-2
+// transformation may have re-triangulated them), outwards, grouped by input face.
+void boundary_triangles(const PolyhedralModel& m, const mesh2d::FaceGrids& g, const fill::TetComplex& cx, TetMesh& out) {
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const ModelFace& face = m.faces[f];
-    if (!face.alive || face.source < 0) continue;
-    const bool flip = face.back < 0 && face.front >= 0;  // the normal points into the mesh
+    if (!face.alive || face.source < 0 || face.front < 0 || face.back < 0) continue;
     for (const auto& t : g.face_tris[f]) {
-      out.tris.insert(out.tris.end(), {t[0], flip ? t[2] : t[1], flip ? t[1] : t[2]});
+      out.tris.insert(out.tris.end(), t.begin(), t.end());
       out.tri_tag.push_back(face.source);
     }
+  }
+  std::vector<std::pair<Index, std::array<Index, 3>>> outer;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t])
+      for (int f = 0; f < 4; ++f)
+        if (cx.nb[t][f] < 0) {
+          const auto fv = cx.face(static_cast<Index>(t), f);
+          const auto tag = cx.surface_tag.find(fill::face_key(fv[0], fv[1], fv[2]));
+          if (tag == cx.surface_tag.end()) throw MeshingError("a boundary face of the mesh lies on no input face (nodes " + std::to_string(fv[0] + 1) + ", " + std::to_string(fv[1] + 1) + ", " + std::to_string(fv[2] + 1) + ")");
+          outer.push_back({tag->second, fv});
+        }
+  std::stable_sort(outer.begin(), outer.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [tag, fv] : outer) {
+    out.tris.insert(out.tris.end(), fv.begin(), fv.end());
+    out.tri_tag.push_back(tag);
   }
 }
 
@@ -188,6 +254,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   const auto t_all = Clock::now();
   GenerateStats st;
   const PolyInput in = opt.merge_coplanar ? merge_coplanar_triangles(original) : original;
+  if (opt.order != 1 && opt.order != 2) throw InputError("element order " + std::to_string(opt.order) + ": give 1 (4-node) or 2 (10-node tetrahedra)");
   const std::int64_t want = opt.elements > 0 ? opt.elements : in.required_elements;
   if (opt.size <= 0 && want <= 0) throw InputError(in.source + ": no required number of elements (give -n or -s)");
   DecomposeOptions dopt;
@@ -221,10 +288,10 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   double used = np, last = -1, scale = 1, best_miss = 1e300;
   const double target = static_cast<double>(want);
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
-    const double spacing = opt.size > 0 ? opt.size : search_spacing(d, np, target, scale, st);
+    const double spacing = opt.size > 0 ? opt.size : search_spacing(d, np, target, scale, run.threads, st);
     if (last > 0 && std::abs(spacing / last - 1) < 1e-3) break;  // nothing new to try
     last = spacing;
-    Built again = place_nodes(d, spacing, st);
+    Built again = place_nodes(d, spacing, run.threads, st);
     fill_cells(d, again, run, st);
     ++st.fillings;
     const double count = static_cast<double>(again.tets.size());
@@ -240,7 +307,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
     GenerateStats scratch;
     double reach = 0;  // at least half the model's diameter
     for (const Vec3& p : d.model.nodes) reach = std::max(reach, (p - d.model.nodes.front()).norm());
-    const Built coarsest = place_nodes(d, 2 * reach, scratch, true);
+    const Built coarsest = place_nodes(d, 2 * reach, run.threads, scratch, true);
     st.count_floor = std::llround(predict_tets(tally_nodes(d.model, coarsest), scale));
   }
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
@@ -249,9 +316,21 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   const auto t_opt = Clock::now();
   fill::TetComplex cx(b.X);
   cx.build(std::move(b.tets), std::move(b.region));
-  for (std::size_t f = 0; f < d.model.faces.size(); ++f)
-    if (d.model.faces[f].alive && d.model.faces[f].source >= 0)
-      for (const auto& t : b.grids.face_tris[f]) cx.constrained.insert(fill::face_key(t[0], t[1], t[2]));
+  {
+    // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5)
+    // within their input face
+    std::unordered_set<fill::FaceKey, fill::FaceKeyHash> input_faces;
+    for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
+      const ModelFace& face = d.model.faces[f];
+      if (!face.alive || face.source < 0) continue;
+      for (const auto& t : b.grids.face_tris[f]) {
+        input_faces.insert(fill::face_key(t[0], t[1], t[2]));
+        if (face.front < 0 || face.back < 0) cx.surface_tag[fill::face_key(t[0], t[1], t[2])] = face.source;
+      }
+    }
+    cx.constrain(input_faces);
+    cx.boundary_flips = opt.boundary_flips;
+  }
   // transformations and smoothing in turn: each opens moves for the other; then the slivers
   // they leave (nodes on input faces stay where they are)
   std::vector<char> fixed = node_kinds(d.model, b);
@@ -283,8 +362,9 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
     const Index v[4] = {id[tets[t][0]], id[tets[t][1]], id[tets[t][2]], id[tets[t][3]]};
     out.add_tet(v, region[t]);
   }
-  boundary_triangles(d.model, b.grids, out);
+  boundary_triangles(d.model, b.grids, cx, out);
   for (Index& v : out.tris) v = id[v];
+  if (opt.order == 2) out = to_second_order(out);
   st.nodes = static_cast<std::int64_t>(out.nodes.size());
   st.tets = static_cast<std::int64_t>(out.num_tets());
   st.total = since(t_all);

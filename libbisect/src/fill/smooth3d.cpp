@@ -144,7 +144,7 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
       touched.insert(touched.end(), around[best_v].begin(), around[best_v].end());
     }
     // the tetrahedra around moved nodes: their keys, then the transformations from their faces
-    for (Index t : touched) cx.q[t] = tet_angle_key(X, cx.tet[t]);
+    cx.moved(touched);
     cx.improve_around(touched);
     // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
     // typical case) gets a new free node half an edge inside it, away from its largest face

@@ -1,7 +1,9 @@
 #include "fill/tet_complex.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <cmath>
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
@@ -32,6 +34,9 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_angle_key(X, tet[t]);
   nb.assign(tet.size(), {-1, -1, -1, -1});
   alive.assign(tet.size(), 1);
+  cmask_.assign(tet.size(), 0);
+  born_.assign(tet.size(), ++clock_);
+  failed_.clear();
   free_.clear();
   std::unordered_map<FaceKey, std::pair<Index, int>, FaceKeyHash> open;
   open.reserve(tet.size() * 2);
@@ -58,9 +63,28 @@ std::vector<Tet> TetComplex::tets() const {
   return out;
 }
 
+void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces) {
+  if (faces.empty()) return;
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t])
+      for (int f = 0; f < 4; ++f) {
+        const auto fv = face(static_cast<Index>(t), f);
+        if (faces.count(face_key(fv[0], fv[1], fv[2]))) cmask_[t] |= static_cast<unsigned char>(1u << f);
+      }
+}
+
 void TetComplex::refresh_quality() {
   for (std::size_t t = 0; t < tet.size(); ++t)
     if (alive[t]) q[t] = tet_angle_key(X, tet[t]);
+  failed_.clear();
+}
+
+void TetComplex::moved(const std::vector<Index>& tets) {
+  ++clock_;
+  for (Index t : tets) {
+    q[t] = tet_angle_key(X, tet[t]);
+    born_[t] = clock_;
+  }
 }
 
 std::vector<Index> TetComplex::tags() const {
@@ -76,12 +100,7 @@ std::array<Index, 3> TetComplex::face(Index t, int f) const {
   return {tet[t][c[0]], tet[t][c[1]], tet[t][c[2]]};
 }
 
-bool TetComplex::is_constrained(Index t, int f) const {
-  if (nb[t][f] < 0) return true;
-  if (constrained.empty()) return false;
-  const auto fv = face(t, f);
-  return constrained.count(face_key(fv[0], fv[1], fv[2])) > 0;
-}
+bool TetComplex::is_constrained(Index t, int f) const { return nb[t][f] < 0 || (cmask_[t] >> f & 1u); }
 
 int TetComplex::corner_of(Index t, Index v) const {
   for (int k = 0; k < 4; ++k)
@@ -95,12 +114,13 @@ int TetComplex::face_towards(Index t, Index other) const {
   return -1;
 }
 
-std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std::vector<Tet>& fresh) {
+std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std::vector<Tet>& fresh, bool new_boundary) {
   // the old set's outside faces, with the tetrahedron (and its face) on the other side
   struct Outer {
     FaceKey key;
     Index n;
     int nf;
+    bool held;  // constrained
   };
   std::vector<Outer> outer;
   const unsigned in_old = new_stamp();
@@ -114,7 +134,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       if (n >= 0)
         for (int g = 0; g < 4; ++g)
           if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) nf = g;
-      outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf});
+      outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf, is_constrained(o, f)});
     }
   const Index inherited = old.empty() ? 0 : tag[old.front()];
   for (Index o : old) {
@@ -132,6 +152,8 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       alive[id] = 1;
       tag[id] = inherited;
       q[id] = tet_angle_key(X, t);
+      cmask_[id] = 0;
+      born_[id] = clock_ + 1;
     } else {
       id = static_cast<Index>(tet.size());
       tet.push_back(t);
@@ -139,6 +161,8 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       alive.push_back(1);
       tag.push_back(inherited);
       q.push_back(tet_angle_key(X, t));
+      cmask_.push_back(0);
+      born_.push_back(clock_ + 1);
     }
     ids.push_back(id);
   }
@@ -148,16 +172,16 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     FaceKey key;
     Index t;
     int f;
-    bool fresh;
+    bool fresh, held;
   };
   std::vector<Side> sides;
   sides.reserve(ids.size() * 4 + outer.size());
   for (Index id : ids)
     for (int f = 0; f < 4; ++f) {
       const auto fv = face(id, f);
-      sides.push_back({face_key(fv[0], fv[1], fv[2]), id, f, true});
+      sides.push_back({face_key(fv[0], fv[1], fv[2]), id, f, true, false});
     }
-  for (const Outer& o : outer) sides.push_back({o.key, o.n, o.nf, false});
+  for (const Outer& o : outer) sides.push_back({o.key, o.n, o.nf, false, o.held});
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
     if (x.key.a != y.key.a) return x.key.a < y.key.a;
     if (x.key.b != y.key.b) return x.key.b < y.key.b;
@@ -172,12 +196,18 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       i = j;
       continue;
     }
+    if (j - i == 1 && new_boundary) {  // a new face of the outer boundary
+      i = j;
+      continue;
+    }
     if (j - i != 2) throw MeshingError("tetrahedral complex: a replacement does not fill the space it replaces");
     const Side& y = sides[i + 1];
     nb[x.t][x.f] = y.t;
     if (y.t >= 0) nb[y.t][y.f] = x.t;
+    if (y.held && y.t >= 0) cmask_[x.t] |= static_cast<unsigned char>(1u << x.f);  // a kept constrained face
     i = j;
   }
+  ++clock_;
   return ids;
 }
 
@@ -305,6 +335,10 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
   }
   const unsigned final_mark = new_stamp();
   for (Index t : cavity) mark_[t] = final_mark;
+  // two arms of the cavity may meet across a constrained face: it must stay, so v does not go in
+  for (Index t : cavity)
+    for (int f = 0; f < 4; ++f)
+      if (marked(nb[t][f], final_mark) && is_constrained(t, f)) return {};
   std::vector<Tet> fresh;
   for (Index t : cavity)
     for (int f = 0; f < 4; ++f) {
@@ -319,11 +353,12 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
   return replace(cavity, fresh);
 }
 
-std::vector<Index> TetComplex::edge_ring(Index t, Index a, Index b, bool* closed) const {
-  std::vector<Index> ring{t};
-  *closed = false;
+int TetComplex::edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index* apex, bool* closed, bool* held) const {
+  *closed = *held = false;
+  int k = 0;
   Index cur = t, prev = -1;
-  for (int guard = 0; guard < 128; ++guard) {
+  while (k < cap) {
+    ring[k++] = cur;
     // the two faces of cur through edge ab are those opposite its other two corners
     int next_face = -1;
     for (int f = 0; f < 4; ++f) {
@@ -333,17 +368,80 @@ std::vector<Index> TetComplex::edge_ring(Index t, Index a, Index b, bool* closed
       next_face = f;
       if (prev < 0) break;  // first step: either way round
     }
-    if (next_face < 0 || is_constrained(cur, next_face)) return ring;
+    if (next_face < 0) return k;
+    if (is_constrained(cur, next_face)) {
+      *held = true;
+      return k;
+    }
+    // the face crossed holds a, b and cur's fourth corner
+    for (Index x : tet[cur])
+      if (x != a && x != b && x != tet[cur][next_face]) apex[k - 1] = x;
     const Index n = nb[cur][next_face];
     if (n == t) {
       *closed = true;
-      return ring;
+      return k;
     }
     prev = cur;
     cur = n;
-    ring.push_back(cur);
   }
-  return ring;
+  return k + 1;  // longer than cap
+}
+
+namespace {
+
+// The 2-2 transformation keeps boundary triangles at or above this (20 degrees), or at the
+// poorer old one's angle when that was below.
+constexpr double kMinBoundaryAngle = 0.3490658503988659;
+
+// The smallest angle of a triangle in 3D, radians: the one facing the shortest side.
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm(), ab = (b - a).squaredNorm();
+  const Vec3 &p = bc <= ca && bc <= ab ? a : ca <= ab ? b : c;  // the corner facing it
+  const Vec3 &u = &p == &a ? b : &p == &b ? c : a, &v = &p == &a ? c : &p == &b ? a : b;
+  return std::atan2((u - p).cross(v - p).norm(), (u - p).dot(v - p));
+}
+
+}  // namespace
+
+bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
+  const Index n = nb[t][f];
+  const auto fv = face(t, f);
+  const Index d = tet[t][f];
+  const int nf = face_towards(n, t);
+  const Index e = tet[n][nf];
+  for (int k = 0; k < 3; ++k) {
+    // the edge (x, y) of the shared face, its third node c: the faces (x, y, d) of t and
+    // (x, y, e) of n are those opposite c
+    const Index x = fv[k], y = fv[(k + 1) % 3], c = fv[(k + 2) % 3];
+    const int ct = corner_of(t, c), cn = corner_of(n, c);
+    if (nb[t][ct] >= 0 || nb[n][cn] >= 0) continue;  // not two faces of the outer boundary
+    const auto ft = face(t, ct), fn = face(n, cn);
+    const auto tag_t = surface_tag.find(face_key(ft[0], ft[1], ft[2]));
+    const auto tag_n = surface_tag.find(face_key(fn[0], fn[1], fn[2]));
+    if (tag_t == surface_tag.end() || tag_n == surface_tag.end() || tag_t->second != tag_n->second) continue;
+    Tet tx = tet[t], ty = tet[t];  // (c, d, e) with x, and with y
+    tx[corner_of(t, y)] = e;
+    ty[corner_of(t, x)] = e;
+    if (!positive(X, tx) || !positive(X, ty)) continue;  // the quadrilateral x d y e is not convex
+    const double need = std::min(q[t], q[n]) * (1 + 1e-9);
+    if (!(tet_angle_key(X, tx) > need) || !(tet_angle_key(X, ty) > need)) continue;
+    // the boundary's grid was made for its triangles (4.4); they may not get worse than the
+    // poorer of the two, nor under 20 degrees when they were above (without this, the flips
+    // left more slivers than they removed, measured on the ../shared STL models)
+    const double was = std::min(triangle_min_angle(X[x], X[y], X[d]), triangle_min_angle(X[x], X[y], X[e]));
+    const double now = std::min(triangle_min_angle(X[x], X[d], X[e]), triangle_min_angle(X[y], X[d], X[e]));
+    if (now < std::min(was, kMinBoundaryAngle)) continue;
+    const Index tag = tag_t->second;
+    surface_tag.erase(tag_t);
+    surface_tag.erase(tag_n);
+    surface_tag[face_key(x, d, e)] = tag;
+    surface_tag[face_key(y, d, e)] = tag;
+    failed_.erase((static_cast<std::uint64_t>(std::min(x, y)) << 32) | static_cast<std::uint32_t>(std::max(x, y)));
+    for (Index id : replace({t, n}, {tx, ty}, true))
+      for (int g = 0; g < 4; ++g) queue.push_back({id, g});
+    return true;
+  }
+  return false;
 }
 
 bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
@@ -354,62 +452,73 @@ bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& 
   for (int g = 0; g < 4; ++g)
     if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) e = tet[n][g];
   std::vector<Tet> fresh;
-  double after = 1e300;
   for (Index c : fv) {  // each face corner of t replaced by e
     Tet m = tet[t];
     m[corner_of(t, c)] = e;
     if (!positive(X, m)) return false;  // the segment between the apexes misses the face
-    after = std::min(after, tet_angle_key(X, m));
     fresh.push_back(m);
   }
-  const double before = std::min(q[t], q[n]);
-  if (!(after > before * (1 + 1e-9))) return false;
+  const double need = std::min(q[t], q[n]) * (1 + 1e-9);
+  for (const Tet& m : fresh)
+    if (!(tet_angle_key(X, m) > need)) return false;  // the smallest solid angle would not rise
   for (Index id : replace({t, n}, fresh))
     for (int g = 0; g < 4; ++g) queue.push_back({id, g});
   return true;
 }
 
 bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue) {
-  bool closed = false;
-  const std::vector<Index> ring = edge_ring(t, a, b, &closed);
-  const std::size_t k = ring.size();
-  if (!closed || k < 3 || k > kMaxRing) return false;
-  // the ring's polygon: p[i] is the node ring[i] shares with ring[i + 1] (besides a and b)
-  std::vector<Index> p(k);
-  double before = 1e300;
-  for (std::size_t i = 0; i < k; ++i) {
-    before = std::min(before, q[ring[i]]);
-    const Tet& u = tet[ring[i]];
-    const Tet& w = tet[ring[(i + 1) % k]];
-    p[i] = -1;
-    for (Index x : u)
-      if (x != a && x != b && std::find(w.begin(), w.end(), x) != w.end()) p[i] = x;
-    if (p[i] < 0) return false;
+  const std::uint64_t edge = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+  const auto seen = failed_.find(edge);
+  if (seen != failed_.end()) {
+    const Failure& was = seen->second;
+    if (was.stamp == kForever) return false;
+    bool same = true;
+    for (int i = 0; i < was.k && same; ++i) same = alive[was.ring[i]] && born_[was.ring[i]] <= was.stamp;
+    if (same) return false;  // the same ring failed before
   }
+  std::array<Index, kMaxRing> ring, p;  // p[i]: the node ring[i] shares with ring[i + 1] (besides a and b)
+  bool closed = false, held = false;
+  const int n = edge_ring(t, a, b, static_cast<int>(kMaxRing), ring.data(), p.data(), &closed, &held);
+  if (held) {  // a, b on a constrained face: that never goes, nor does the edge
+    failed_[edge] = Failure{kForever, 0, {}};
+    return false;
+  }
+  if (!closed || n < 3) return false;
+  const std::size_t k = static_cast<std::size_t>(n);
+  auto fail = [&] {
+    failed_[edge] = Failure{clock_, n, ring};
+    return false;
+  };
+  double before = 1e300;
+  for (std::size_t i = 0; i < k; ++i) before = std::min(before, q[ring[i]]);
   // best triangulation of the polygon (Klincsek's dynamic programme): each triangle (i, m, j)
   // makes two tetrahedra with a and b, valid when a lies on the side `sign` of it and b on the
-  // other; the ring's order fixes which sign that is, so both are tried
+  // other; the ring's order fixes which sign that is, so both are tried. Only triangulations
+  // better than `before` matter, so a part no better than it counts as impossible: most
+  // triangles are then rejected before their tetrahedra are graded.
+  const double need = before * (1 + 1e-9);
+  std::array<double, kMaxRing * kMaxRing> best;
+  std::array<int, kMaxRing * kMaxRing> split;
   for (int sign : {1, -1}) {
-    std::vector<double> best(k * k, -1);  // best[i * k + j]: polygon i..j, -1 impossible
-    std::vector<int> split(k * k, -1);
+    best.fill(-1);  // best[i * k + j]: polygon i..j, -1 impossible
     for (std::size_t i = 0; i + 1 < k; ++i) best[i * k + i + 1] = 1e300;
     for (std::size_t len = 2; len < k; ++len)
       for (std::size_t i = 0; i + len < k; ++i) {
         const std::size_t j = i + len;
         for (std::size_t m = i + 1; m < j; ++m) {
           const double l = best[i * k + m], r = best[m * k + j];
-          if (l < 0 || r < 0) continue;
+          if (l < 0 || r < 0 || std::min(l, r) <= best[i * k + j]) continue;
           const Vec3 &A = X[p[i]], &B = X[p[m]], &C = X[p[j]];
           if (orient3d(A, B, C, X[a]) != sign || orient3d(A, B, C, X[b]) != -sign) continue;
-          const Tet ta = sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a};
-          const Tet tb = sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b};
-          const double worst = std::min({l, r, tet_angle_key(X, ta), tet_angle_key(X, tb)});
-          if (worst > best[i * k + j]) best[i * k + j] = worst, split[i * k + j] = static_cast<int>(m);
+          const double floor = std::max(need, best[i * k + j]);
+          const double ka = min_solid_angle_tan_half(A, B, C, X[a]);
+          if (!(ka > floor)) continue;
+          const double worst = std::min({l, r, ka, min_solid_angle_tan_half(A, B, C, X[b])});
+          if (worst > floor) best[i * k + j] = worst, split[i * k + j] = static_cast<int>(m);
         }
       }
     const double after = best[0 * k + k - 1];
     if (after < 0) continue;
-    if (!(after > before * (1 + 1e-9))) return false;
     std::vector<Tet> fresh;
     std::vector<std::pair<std::size_t, std::size_t>> todo{{0, k - 1}};
     while (!todo.empty()) {
@@ -422,11 +531,11 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
       todo.push_back({i, m});
       todo.push_back({m, j});
     }
-    for (Index id : replace(ring, fresh))
+      for (Index id : replace(std::vector<Index>(ring.begin(), ring.begin() + n), fresh))
       for (int g = 0; g < 4; ++g) queue.push_back({id, g});
     return true;
   }
-  return false;
+  return fail();
 }
 
 std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops) {
@@ -434,7 +543,7 @@ std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::
   for (std::size_t i = 0; i < queue.size() && ops < max_ops; ++i) {
     const auto [t, f] = queue[i];
     if (!alive[t] || is_constrained(t, f)) continue;
-    if (try_flip23(t, f, queue)) {
+    if (try_flip23(t, f, queue) || (boundary_flips && try_flip22(t, f, queue))) {
       ++ops;
       continue;
     }

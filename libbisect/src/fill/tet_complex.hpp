@@ -7,12 +7,14 @@
 // and the removal of a helper vertex are each a few lines.
 //
 // Constrained faces (the boundary of a cell, or input faces and region interfaces in the global
-// pass) are the faces with no neighbour plus any face in `constrained`: no transformation
-// crosses or removes them.
+// pass) are the faces with no neighbour plus the faces given to `constrain`: no transformation
+// crosses or removes them. They are kept as a bit per tetrahedron face, handed on by `replace`
+// (the hottest test of the transformations: a hash lookup per face step cost a tenth of the time).
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -44,7 +46,12 @@ class TetComplex {
   std::vector<char> alive;
   std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
   std::vector<double> q;   // per tetrahedron: tet_angle_key, the min-max criterion
-  std::unordered_set<FaceKey, FaceKeyHash> constrained;
+  // The outer boundary's faces with the (planar) input face each lies in. With boundary_flips,
+  // two boundary faces of one input face that meet at an edge take the quadrilateral's other
+  // diagonal when that raises the smallest solid angle (7.5, the 2-2 transformation) and keeps
+  // the boundary triangles' angles (at least 20 degrees, or the old ones); the map follows.
+  std::unordered_map<FaceKey, Index, FaceKeyHash> surface_tag;
+  bool boundary_flips = false;
   // Edge removal (a small dynamic programme per edge) is tried only where a tetrahedron's
   // smallest solid angle is below this key (tet_angle_key); above it the gain is small and the
   // cost is not. The default, tan(0.1), is Ω < 0.2 sr (the regular tetrahedron's is 0.551).
@@ -56,11 +63,17 @@ class TetComplex {
   // The live tetrahedra, and their tags in the same order.
   std::vector<Tet> tets() const;
   std::vector<Index> tags() const;
+  // Marks these faces (of the current tetrahedra) as constrained; faces not in the complex are
+  // ignored.
+  void constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces);
   void refresh_quality();  // after the nodes moved (smoothing)
+  void moved(const std::vector<Index>& tets);  // after some tetrahedra's nodes moved
   std::size_t live_count() const { return tet.size() - free_.size(); }
 
   // Swaps the tetrahedra `old` for `fresh` (same region of space). Returns the new ids.
-  std::vector<Index> replace(const std::vector<Index>& old, const std::vector<Tet>& fresh);
+  // new_boundary: faces of `fresh` that match nothing are outer boundary (the 2-2
+  // transformation re-triangulates it), else that is an error.
+  std::vector<Index> replace(const std::vector<Index>& old, const std::vector<Tet>& fresh, bool new_boundary = false);
 
   // Face f's nodes, ordered so that their right-hand normal points out of t.
   std::array<Index, 3> face(Index t, int f) const;
@@ -81,7 +94,8 @@ class TetComplex {
   std::vector<Index> insert_delaunay(Index v, Index start);
 
   // Local min-max transformations (7.5) from the given faces onwards, whenever they raise the
-  // smallest solid angle of the tetrahedra involved: 2-3 across a face, and the removal of an
+  // smallest solid angle of the tetrahedra involved: 2-3 across a face, 2-2 at the outer
+  // boundary (boundary_flips), and the removal of an
   // interior edge whose ring has 3 to kMaxRing tetrahedra, the ring's polygon triangulated at
   // its best (3-2 and the 4-4 of 7.5 are its rings of 3 and 4; larger rings reach further out
   // of the local minima 7.6.1 describes). Returns the number applied.
@@ -91,12 +105,29 @@ class TetComplex {
   // improve() from every unconstrained interior face.
   std::int64_t improve_all(std::int64_t max_ops);
 
-  // Tetrahedra around the edge (a, b) of t, in order; `closed` tells whether the ring closes
-  // (an interior edge) or ends at boundary or constrained faces.
-  std::vector<Index> edge_ring(Index t, Index a, Index b, bool* closed) const;
+  // The tetrahedra around the edge (a, b) of t, in order, into ring (at most `cap`; cap + 1 is
+  // returned when there are more), and apex[i], the node that ring[i] shares with ring[i + 1]
+  // besides a and b. `closed`: the ring closes (an interior edge); `held`: it ends at a
+  // constrained face (the edge lies on one).
+  int edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index* apex, bool* closed, bool* held) const;
 
  private:
   std::vector<Index> free_;
+  std::vector<unsigned char> cmask_;  // bit f: face f is constrained (besides nb < 0)
+  // Edge removal remembers its failures: an edge whose ring of tetrahedra is unchanged since
+  // (every one born before the failure, and no node moved) fails again, so its dynamic
+  // programme is skipped. born_: a clock value per tetrahedron, set when made or moved.
+  std::vector<std::uint64_t> born_;
+  std::uint64_t clock_ = 0;
+  // A failure: the clock then and the ring; kForever for an edge on a constrained face.
+  static constexpr std::size_t kMaxRing = 7;
+  static constexpr std::uint64_t kForever = ~std::uint64_t{0};
+  struct Failure {
+    std::uint64_t stamp;
+    int k;
+    std::array<Index, kMaxRing> ring;
+  };
+  std::unordered_map<std::uint64_t, Failure> failed_;  // edge (low node << 32 | high) -> failure
   // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
   // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
   mutable std::vector<unsigned> mark_;
@@ -111,8 +142,8 @@ class TetComplex {
   // false when p is on a node or on a constrained face.
   bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
   bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
+  bool try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue);
   bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
-  static constexpr std::size_t kMaxRing = 7;
 };
 
 // Positive orientation test of a tetrahedron given by node ids.

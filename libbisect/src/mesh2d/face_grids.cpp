@@ -8,6 +8,7 @@
 #include "bisect/errors.hpp"
 #include "mesh2d/fill_region.hpp"
 #include "mesh2d/spacing.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect::mesh2d {
 namespace {
@@ -50,19 +51,29 @@ double angle_at(const Vec3& a, const Vec3& b, const Vec3& c) {  // at a, degrees
   return std::atan2(u.cross(v).norm(), u.dot(v)) * 180 / M_PI;
 }
 
-// One face: its loops in the plane frame with the shared edge nodes, filled, optimised, and its
-// interior nodes and triangles added to g.
-void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, bool nodes_only, FaceGrids& g) {
+// One face's grid before it joins g: the node of g behind each local node (the loops' nodes;
+// -1 for the interior nodes the fill made), the interior nodes in 3D, the triangles in local ids.
+struct FaceGrid {
+  std::vector<Index> global;
+  std::vector<Vec3> inner;
+  std::vector<std::array<Index, 3>> tris;
+};
+
+// One face: its loops in the plane frame with the shared edge nodes, filled and optimised.
+// Reads the model and edge nodes (`nodes`, a copy: g.nodes grows as faces are committed) and
+// g's edge nodes, writes nothing shared: faces run in parallel.
+FaceGrid mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, bool nodes_only, const std::vector<Vec3>& nodes,
+                   const FaceGrids& g) {
   const ModelFace& f = model.faces[fi];
   const PlaneFrame frame(f.normal, model.nodes[f.loops[0][0]]);
   TriMesh2 m;
-  std::vector<Index> global;  // local node -> node of g
+  FaceGrid out;
   std::unordered_map<Index, Index> local;
   auto add = [&](Index v) {
-    auto [it, fresh] = local.emplace(v, static_cast<Index>(global.size()));
+    auto [it, fresh] = local.emplace(v, static_cast<Index>(out.global.size()));
     if (fresh) {
-      global.push_back(v);
-      m.nodes.push_back(frame.to2d(g.nodes[v]));
+      out.global.push_back(v);
+      m.nodes.push_back(frame.to2d(nodes[v]));
     }
     return it->second;
   };
@@ -87,13 +98,25 @@ void mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimize, 
   std::fill(m.fixed.begin(), m.fixed.begin() + static_cast<std::ptrdiff_t>(boundary), 1);
   if (optimize && !nodes_only) optimize_planar(m);
   for (std::size_t v = boundary; v < m.nodes.size(); ++v) {
-    g.nodes.push_back(frame.origin + m.nodes[v].x() * frame.e1 + m.nodes[v].y() * frame.e2);
-    g.spacing.push_back(h);
-    g.face_of.push_back(static_cast<Index>(fi));
-    global.push_back(static_cast<Index>(g.nodes.size() - 1));
+    out.inner.push_back(frame.origin + m.nodes[v].x() * frame.e1 + m.nodes[v].y() * frame.e2);
+    out.global.push_back(-1);
   }
+  out.tris = std::move(m.tris);
+  return out;
+}
+
+// The face's interior nodes numbered after those of g, its triangles added.
+void commit_face(Index fi, double h, FaceGrid& fg, FaceGrids& g) {
+  std::size_t k = 0;
+  for (Index& v : fg.global)
+    if (v < 0) {
+      g.nodes.push_back(fg.inner[k++]);
+      g.spacing.push_back(h);
+      g.face_of.push_back(fi);
+      v = static_cast<Index>(g.nodes.size() - 1);
+    }
   auto& out = g.face_tris[fi];
-  for (const auto& t : m.tris) out.push_back({global[t[0]], global[t[1]], global[t[2]]});
+  for (const auto& t : fg.tris) out.push_back({fg.global[t[0]], fg.global[t[1]], fg.global[t[2]]});
 }
 
 FaceGrids mesh_once(const PolyhedralModel& model, double h, const FaceGridOptions& opt) {
@@ -101,14 +124,20 @@ FaceGrids mesh_once(const PolyhedralModel& model, double h, const FaceGridOption
   g.h = h;
   discretise_edges(model, h, g);
   g.face_tris.assign(model.faces.size(), {});
-  std::size_t live = 0, done = 0;
-  for (const ModelFace& f : model.faces) live += f.alive ? 1 : 0;
-  for (std::size_t fi = 0; fi < model.faces.size(); ++fi) {
-    if (!model.faces[fi].alive) continue;
-    mesh_face(model, static_cast<Index>(fi), h, opt.optimize, opt.nodes_only, g);
-    g.triangles += static_cast<std::int64_t>(g.face_tris[fi].size());
-    if (opt.progress && !opt.progress(static_cast<double>(++done) / static_cast<double>(live))) throw Cancelled();
-  }
+  std::vector<Index> live;
+  for (std::size_t fi = 0; fi < model.faces.size(); ++fi)
+    if (model.faces[fi].alive) live.push_back(static_cast<Index>(fi));
+  std::vector<FaceGrid> made(live.size());
+  const std::vector<Vec3> edge_and_model_nodes = g.nodes;
+  util::ordered_parallel(
+      live.size(), util::thread_count(opt.threads),
+      [&](std::size_t k) { made[k] = mesh_face(model, live[k], h, opt.optimize, opt.nodes_only, edge_and_model_nodes, g); },
+      [&](std::size_t k) {
+        commit_face(live[k], h, made[k], g);
+        made[k] = {};
+        g.triangles += static_cast<std::int64_t>(g.face_tris[live[k]].size());
+        if (opt.progress && !opt.progress(static_cast<double>(k + 1) / static_cast<double>(live.size()))) throw Cancelled();
+      });
   g.min_angle_deg = 180, g.max_angle_deg = 0;
   for (const auto& tris : g.face_tris)
     for (const auto& t : tris)

@@ -25,6 +25,7 @@ struct FaceGridOptions {
   double size = 0;            // the spacing h itself; when > 0 it is used and `elements` ignored
   bool optimize = true;       // swaps and smoothing (4.4) on each face, boundary nodes fixed
   bool nodes_only = false;    // place the nodes only, no triangles (to count them cheaply)
+  int threads = 1;             // faces meshed at once (0: one per core); the grids are the same for any
   std::function<bool(double)> progress;  // fraction of faces done; return false to cancel
 };
 

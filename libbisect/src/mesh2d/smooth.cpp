@@ -4,6 +4,7 @@
 #include <map>
 
 #include "geom/predicates.hpp"
+#include "mesh2d/tri_quality.hpp"
 #include <cmath>
 
 namespace bisect::mesh2d {
@@ -48,9 +49,11 @@ SmoothStats smooth_laplace(TriMesh2& m, const SmoothOptions& opt) {
       for (std::size_t i = 0; i < k; ++i) {
         const Vec2 &p = m.nodes[E[(i + k - 1) % k]], &c = m.nodes[E[i]], &q = m.nodes[E[(i + 1) % k]];
         if (geom::orient2d(p, c, q) <= 0) *valid = false;
+        if (k == 3) continue;  // below, one arctangent for the triangle
         const Vec2 a = p - c, b = q - c;
         worst = std::min(worst, std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b)) * 180 / M_PI);
       }
+      if (k == 3) worst = std::min(worst, min_angle_deg(m.nodes[E[0]], m.nodes[E[1]], m.nodes[E[2]]));
     }
     return worst;
   };

@@ -29,34 +29,22 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 }
 
 double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  // Van Oosterom–Strackee at each corner, with x, y, z the unit vectors along its three edges:
-  // tan(Ω/2) = |x·(y×z)| / (1 + x·y + x·z + y·z). The triple product is 6V over the product of
-  // the three edge lengths, so one determinant and six lengths serve the four corners (this is
-  // the min-max criterion's key, the generator's hottest function). The smallest corner angle
-  // of a tetrahedron is below π (the four add up to at most 2π), so its denominator is positive
-  // and the ratio is monotone in Ω: the minimum ratio gives the minimum angle.
-  const Vec3 p[4] = {a, b, c, d};
-  Vec3 e[4][4];
-  double inv[4][4];
-  for (const auto& k : kTetEdge) {
-    e[k[0]][k[1]] = p[k[1]] - p[k[0]];
-    e[k[1]][k[0]] = -e[k[0]][k[1]];
-    const double len = e[k[0]][k[1]].norm();
-    inv[k[0]][k[1]] = inv[k[1]][k[0]] = len > 0 ? 1 / len : 0;
-  }
-  const double six_v = std::abs(e[0][1].dot(e[0][2].cross(e[0][3])));
-  double best = std::numeric_limits<double>::infinity();
-  bool flat = true;
-  for (int i = 0; i < 4; ++i) {
-    const int j = (i + 1) % 4, k = (i + 2) % 4, l = (i + 3) % 4;
-    const double ij = inv[i][j], ik = inv[i][k], il = inv[i][l];
-    const double num = six_v * ij * ik * il;
-    const double den = 1 + e[i][j].dot(e[i][k]) * ij * ik + e[i][j].dot(e[i][l]) * ij * il + e[i][k].dot(e[i][l]) * ik * il;
-    if (den <= 0) continue;  // a corner of π or more: not the smallest
-    flat = false;
-    best = std::min(best, num / den);
-  }
-  return flat ? 0 : best;
+  // Van Oosterom–Strackee at each corner i with edge vectors x, y, z of lengths X, Y, Z:
+  // tan(Ω/2) = 6V / (XYZ + (x·y) Z + (x·z) Y + (y·z) X). One determinant and six lengths serve
+  // the four corners and one division the minimum (this is the min-max criterion's key, the
+  // generator's hottest function). The smallest corner angle of a tetrahedron is below π (the
+  // four add up to at most 2π), so its denominator is positive and the ratio is monotone in Ω:
+  // the largest positive denominator gives the smallest angle.
+  const Vec3 ab = b - a, ac = c - a, ad = d - a, bc = c - b, bd = d - b, cd = d - c;
+  const double lab = ab.norm(), lac = ac.norm(), lad = ad.norm(), lbc = bc.norm(), lbd = bd.norm(), lcd = cd.norm();
+  const double six_v = std::abs(ab.dot(ac.cross(ad)));
+  // corner a: ab, ac, ad; b: -ab, bc, bd; c: -ac, -bc, cd; d: -ad, -bd, -cd
+  const double da = lab * lac * lad + ab.dot(ac) * lad + ab.dot(ad) * lac + ac.dot(ad) * lab;
+  const double db = lab * lbc * lbd - ab.dot(bc) * lbd - ab.dot(bd) * lbc + bc.dot(bd) * lab;
+  const double dc = lac * lbc * lcd + ac.dot(bc) * lcd - ac.dot(cd) * lbc - bc.dot(cd) * lac;
+  const double dd = lad * lbd * lcd + ad.dot(bd) * lcd + ad.dot(cd) * lbd + bd.dot(cd) * lad;
+  const double most = std::max(std::max(da, db), std::max(dc, dd));
+  return most > 0 ? six_v / most : 0;
 }
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

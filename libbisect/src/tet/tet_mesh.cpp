@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <unordered_map>
 
 #include "bisect/errors.hpp"
 
@@ -96,6 +97,43 @@ std::vector<Index> TetMesh::neighbours() const {
     }
   }
   return neigh;
+}
+
+TetMesh to_second_order(const TetMesh& linear) {
+  if (linear.order == 2) return linear;
+  TetMesh out = linear;
+  out.order = 2;
+  out.tets.clear();
+  out.tris.clear();
+  out.tet_ids.clear();
+  out.region.clear();
+  std::unordered_map<std::uint64_t, Index> mid;  // edge (lo << 32 | hi) -> its mid-node
+  mid.reserve(linear.num_tets() * 2);
+  auto middle = [&](Index a, Index b) {
+    const std::uint64_t key = (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+    auto [it, fresh] = mid.emplace(key, Index(out.nodes.size()));
+    if (fresh) {
+      if (out.nodes.size() >= std::size_t(std::numeric_limits<Index>::max())) throw MeshingError("to_second_order: more than 2^31-1 nodes");
+      out.nodes.push_back(0.5 * (linear.nodes[a] + linear.nodes[b]));
+      if (!out.node_ids.empty()) out.node_ids.push_back(out.node_ids.back() + 1);
+    }
+    return it->second;
+  };
+  out.tets.reserve(linear.num_tets() * 10);
+  for (std::size_t t = 0; t < linear.num_tets(); ++t) {
+    Index v[10];
+    for (int i = 0; i < 4; ++i) v[i] = linear.tet_node(t, i);
+    for (int e = 0; e < 6; ++e) v[4 + e] = middle(v[kTetEdge[e][0]], v[kTetEdge[e][1]]);
+    out.add_tet(v, t < linear.region.size() ? linear.region[t] : 0);
+  }
+  if (!linear.tet_ids.empty()) out.tet_ids = linear.tet_ids;
+  for (std::size_t f = 0; f < linear.num_tris(); ++f) {
+    Index v[6];
+    for (int i = 0; i < 3; ++i) v[i] = linear.tris[3 * f + i];
+    for (int e = 0; e < 3; ++e) v[3 + e] = middle(v[kTriEdge[e][0]], v[kTriEdge[e][1]]);
+    out.tris.insert(out.tris.end(), v, v + 6);
+  }
+  return out;
 }
 
 }  // namespace bisect

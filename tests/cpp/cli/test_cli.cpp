@@ -211,6 +211,18 @@ TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
   ASSERT_EQ(r.code, 0) << r.err;
   q = run("quality '" + inp.string() + "'");
   EXPECT_EQ(q.code, 0) << q.out << q.err;
+  // 10-node tetrahedra on one thread, written for CalculiX, read back valid
+  r = run(in + " -n 2000 --order 2 --threads 1 -o '" + inp.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(slurp(inp).find("C3D10"), std::string::npos);
+  q = run("quality '" + inp.string() + "'");
+  EXPECT_EQ(q.code, 0) << q.out << q.err;
+  EXPECT_NE(q.out.find("valid: yes"), std::string::npos) << q.out;
+  for (const char* bad : {"--order 3", "--threads -1", "--threads many"}) {
+    r = run(in + " -n 2000 " + bad + " -o '" + inp.string() + "'");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;
+  }
 }
 
 TEST(Cli, CellsOnlyRejectsACavityCrossingItsOuterBoundary) {

@@ -42,7 +42,8 @@ inline void expect_sound(const TetMesh& m, const PolyInput& in, const std::strin
     }
   std::size_t missing = 0;
   for (std::size_t b = 0; b < m.num_tris(); ++b) {
-    std::array<Index, 3> k{m.tris[3 * b], m.tris[3 * b + 1], m.tris[3 * b + 2]};
+    const std::size_t at = b * static_cast<std::size_t>(m.nodes_per_tri());  // corners first
+    std::array<Index, 3> k{m.tris[at], m.tris[at + 1], m.tris[at + 2]};
     std::sort(k.begin(), k.end());
     missing += faces.count(k) == 0;
   }

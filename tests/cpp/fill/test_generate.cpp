@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
@@ -88,6 +89,101 @@ TEST(Generate, OptionsErrorsAndCancel) {
   int calls = 0;
   opt.progress = [&](double) { return ++calls < 2; };
   EXPECT_THROW(generate_mesh(in, opt), Cancelled);
+}
+
+// The face grids and cell fillings run on several threads; the mesh must not depend on how
+// many, and the progress callback runs on the caller's thread only.
+TEST(Generate, TheMeshIsTheSameForEveryThreadCount) {
+  const PolyInput in = read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  const std::thread::id caller = std::this_thread::get_id();
+  TetMesh first;
+  for (int threads : {1, 2, 3, 8}) {
+    GenerateOptions opt;
+    opt.elements = 6000;
+    opt.threads = threads;
+    bool off_thread = false;
+    opt.progress = [&](double) {
+      off_thread |= std::this_thread::get_id() != caller;
+      return true;
+    };
+    const TetMesh m = generate_mesh(in, opt);
+    EXPECT_FALSE(off_thread) << threads;
+    if (threads == 1) {
+      expect_sound(m, in, "threads 1");
+      first = m;
+      continue;
+    }
+    ASSERT_EQ(m.nodes.size(), first.nodes.size()) << threads;
+    ASSERT_EQ(m.num_tets(), first.num_tets()) << threads;
+    EXPECT_TRUE(m.nodes == first.nodes) << threads;
+    EXPECT_TRUE(m.tets == first.tets) << threads;
+    EXPECT_TRUE(m.region == first.region) << threads;
+    EXPECT_TRUE(m.tris == first.tris) << threads;
+  }
+  // cancelled while cells fill on two threads: the call ends with Cancelled, nothing left running
+  GenerateOptions opt;
+  opt.elements = 6000;
+  opt.threads = 2;
+  opt.progress = [](double x) { return x < 0.5; };
+  EXPECT_THROW(generate_mesh(in, opt), Cancelled);
+}
+
+// --order 2: the same corners and tetrahedra, a mid-node at the middle of every edge, shared by
+// every tetrahedron and boundary triangle on it; the validator's checks of 10-node meshes pass.
+TEST(Generate, SecondOrderAddsSharedMidEdgeNodes) {
+  const PolyInput in = read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  GenerateOptions opt;
+  opt.elements = 3000;
+  const TetMesh linear = generate_mesh(in, opt);
+  opt.order = 2;
+  GenerateStats st;
+  const TetMesh quad = generate_mesh(in, opt, &st);
+  ASSERT_EQ(quad.order, 2);
+  expect_sound(quad, in, "order 2");
+  ASSERT_EQ(quad.num_tets(), linear.num_tets());
+  ASSERT_EQ(quad.num_tris(), linear.num_tris());
+  EXPECT_EQ(st.nodes, static_cast<std::int64_t>(quad.nodes.size()));
+  std::set<std::pair<Index, Index>> edges;
+  for (std::size_t t = 0; t < linear.num_tets(); ++t)
+    for (const auto& e : kTetEdge) {
+      const Index a = linear.tet_node(t, e[0]), b = linear.tet_node(t, e[1]);
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  EXPECT_EQ(quad.nodes.size(), linear.nodes.size() + edges.size());  // one mid-node per edge
+  for (std::size_t t = 0; t < quad.num_tets(); ++t) {
+    for (int i = 0; i < 4; ++i) ASSERT_EQ(quad.tet_node(t, i), linear.tet_node(t, i));
+    for (int e = 0; e < 6; ++e) {
+      const Vec3 mid = 0.5 * (quad.nodes[quad.tet_node(t, kTetEdge[e][0])] + quad.nodes[quad.tet_node(t, kTetEdge[e][1])]);
+      EXPECT_EQ(quad.nodes[quad.tet_node(t, 4 + e)], mid);
+    }
+  }
+  for (std::size_t f = 0; f < quad.num_tris(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const Vec3 mid = 0.5 * (quad.nodes[quad.tris[6 * f + kTriEdge[e][0]]] + quad.nodes[quad.tris[6 * f + kTriEdge[e][1]]]);
+      EXPECT_EQ(quad.nodes[quad.tris[6 * f + 3 + e]], mid);
+    }
+  opt.order = 3;
+  EXPECT_THROW(generate_mesh(in, opt), InputError);
+}
+
+// --boundary-flips: the 2-2 transformation re-triangulates the outer boundary within its input
+// faces; the mesh stays sound, keeps its boundary triangle count, and every boundary triangle
+// still lies in the plane of the input face it is tagged with.
+TEST(Generate, BoundaryFlipsKeepTheBoundaryOnItsFaces) {
+  const PolyInput in = read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  GenerateOptions opt;
+  opt.elements = 4000;
+  const TetMesh plain = generate_mesh(in, opt);
+  opt.boundary_flips = true;
+  const TetMesh flipped = generate_mesh(in, opt);
+  expect_sound(flipped, in, "boundary flips");
+  EXPECT_EQ(flipped.num_tris(), plain.num_tris());
+  for (std::size_t f = 0; f < flipped.num_tris(); ++f) {
+    const PolyFace& face = in.faces[flipped.tri_tag[f]];
+    const Vec3 &p = in.nodes[face.nodes[0]], &q = in.nodes[face.nodes[1]], &r = in.nodes[face.nodes[2]];
+    const Vec3 n = (q - p).cross(r - p).normalized();
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(n.dot(flipped.nodes[flipped.tris[3 * f + k]] - p), 0, 1e-12);
+  }
 }
 
 // Random CSG solids (unions of boxes and rotated prisms, some hollow): every one that decomposes

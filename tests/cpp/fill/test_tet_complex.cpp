@@ -133,9 +133,56 @@ TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
   EXPECT_EQ(free_cx.live_count(), 3u);
   TetComplex held(X);
   held.build(make());
-  held.constrained.insert(face_key(0, 1, 2));
+  held.constrain({face_key(0, 1, 2)});
   EXPECT_EQ(held.improve_all(10), 0);
   EXPECT_EQ(held.live_count(), 2u);
+}
+
+// The 2-2 transformation (7.5): two tetrahedra over a thin rhombus on the outer boundary, its
+// long diagonal x-y shared; the short diagonal d-e raises the smallest solid angle. It happens
+// only with boundary_flips, only within one input face, and the boundary's tags follow.
+TEST(TetComplex, TwoTwoFlipTakesTheBoundarysOtherDiagonal) {
+  const std::vector<Vec3> X = {{-1, 0, 0}, {1, 0, 0}, {0, -0.3, 0}, {0, 0.3, 0}, {0, 0, 0.5}};
+  const Index x = 0, y = 1, d = 2, e = 3, c = 4;
+  auto make = [&](TetComplex& cx, Index tag_d, Index tag_e) {
+    std::vector<Tet> t = {{x, y, d, c}, {x, y, e, c}};
+    for (Tet& u : t)
+      if (!positive(X, u)) std::swap(u[0], u[1]);
+    cx.build(t);
+    for (std::size_t k = 0; k < 2; ++k)
+      for (int f = 0; f < 4; ++f)
+        if (cx.nb[k][f] < 0) {
+          const auto fv = cx.face(static_cast<Index>(k), f);
+          const bool bottom = std::find(fv.begin(), fv.end(), c) == fv.end();
+          cx.surface_tag[face_key(fv[0], fv[1], fv[2])] = bottom ? (k == 0 ? tag_d : tag_e) : 9;
+        }
+  };
+  TetComplex off(X);
+  make(off, 1, 1);
+  EXPECT_EQ(off.improve_all(10), 0);  // boundary_flips is off by default
+  TetComplex other_faces(X);
+  make(other_faces, 1, 2);
+  other_faces.boundary_flips = true;
+  EXPECT_EQ(other_faces.improve_all(10), 0);  // the two triangles lie in different input faces
+  TetComplex on(X);
+  make(on, 1, 1);
+  const double before = std::min(on.q[0], on.q[1]);
+  on.boundary_flips = true;
+  EXPECT_EQ(on.improve_all(10), 1);
+  ASSERT_EQ(on.live_count(), 2u);
+  double after = 1e300;
+  for (const Tet& t : on.tets()) {
+    EXPECT_TRUE(positive(X, t));
+    EXPECT_NE(std::find(t.begin(), t.end(), d), t.end());
+    EXPECT_NE(std::find(t.begin(), t.end(), e), t.end());
+    after = std::min(after, tet_angle_key(X, t));
+  }
+  EXPECT_GT(after, before);
+  EXPECT_EQ(on.surface_tag.count(face_key(x, y, d)), 0u);
+  EXPECT_EQ(on.surface_tag.count(face_key(x, y, e)), 0u);
+  EXPECT_EQ(on.surface_tag.at(face_key(x, d, e)), 1);
+  EXPECT_EQ(on.surface_tag.at(face_key(y, d, e)), 1);
+  EXPECT_EQ(on.surface_tag.size(), 6u);  // four sides and the two new bottom triangles
 }
 
 }  // namespace

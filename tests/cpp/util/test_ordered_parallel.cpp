@@ -1,0 +1,100 @@
+// ordered_parallel: jobs anywhere, results taken up in index order on the calling thread, the
+// first failure in order reported, a cancelled commit stopping the rest.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "util/ordered_parallel.hpp"
+
+namespace bisect::util {
+namespace {
+
+// Job i sleeps a little, longer for small i, so that later jobs finish first.
+void busy(std::size_t i, std::size_t n) { std::this_thread::sleep_for(std::chrono::microseconds(50 * (n - i))); }
+
+TEST(OrderedParallel, CommitsInIndexOrderOnTheCallingThread) {
+  const std::thread::id caller = std::this_thread::get_id();
+  for (int threads : {1, 2, 4, 8}) {
+    const std::size_t n = 40;
+    std::vector<int> result(n, -1);
+    std::vector<std::size_t> committed;
+    std::atomic<int> off_caller{0};
+    ordered_parallel(
+        n, threads,
+        [&](std::size_t i) {
+          busy(i, n);
+          if (std::this_thread::get_id() != caller) ++off_caller;
+          result[i] = static_cast<int>(i * i);
+        },
+        [&](std::size_t i) {
+          EXPECT_EQ(std::this_thread::get_id(), caller);
+          EXPECT_EQ(result[i], static_cast<int>(i * i));  // its job is done before its commit
+          committed.push_back(i);
+        });
+    ASSERT_EQ(committed.size(), n) << threads;
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(committed[i], i) << threads;
+    if (threads == 1) EXPECT_EQ(off_caller.load(), 0);
+    else EXPECT_GT(off_caller.load(), 0) << threads;  // the helpers did work
+  }
+}
+
+TEST(OrderedParallel, TakesJobsInTheGivenSequence) {
+  const std::vector<std::size_t> sequence{3, 1, 0, 2};
+  std::vector<std::size_t> started, committed;
+  ordered_parallel(
+      4, 1, [&](std::size_t i) { started.push_back(i); }, [&](std::size_t i) { committed.push_back(i); }, sequence);
+  EXPECT_EQ(started, sequence);
+  EXPECT_EQ(committed, (std::vector<std::size_t>{0, 1, 2, 3}));
+}
+
+TEST(OrderedParallel, ReportsTheFirstFailureInOrder) {
+  for (int threads : {1, 2, 4}) {
+    const std::size_t n = 30;
+    std::vector<std::size_t> committed;
+    try {
+      ordered_parallel(
+          n, threads,
+          [&](std::size_t i) {
+            busy(i, n);
+            if (i == 7 || i == 20) throw std::runtime_error("job " + std::to_string(i));
+          },
+          [&](std::size_t i) { committed.push_back(i); });
+      ADD_FAILURE() << "no exception, threads " << threads;
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "job 7") << threads;
+    }
+    EXPECT_EQ(committed.size(), 7u) << threads;  // 0..6, nothing after the failure
+  }
+}
+
+TEST(OrderedParallel, AFailingCommitStopsTheOtherJobs) {
+  for (int threads : {1, 2, 4}) {
+    const std::size_t n = 200;
+    std::atomic<int> ran{0};
+    EXPECT_THROW(ordered_parallel(
+                     n, threads,
+                     [&](std::size_t) {
+                       ++ran;
+                       std::this_thread::sleep_for(std::chrono::microseconds(200));
+                     },
+                     [&](std::size_t i) {
+                       if (i == 2) throw std::runtime_error("cancelled");
+                     }),
+                 std::runtime_error);
+    // the jobs under way when it failed finish; no new ones start
+    EXPECT_LT(ran.load(), 3 + 2 * threads + 8) << threads;
+  }
+}
+
+TEST(OrderedParallel, ThreadCountOfZeroIsOnePerCore) {
+  EXPECT_EQ(thread_count(3), 3);
+  EXPECT_GE(thread_count(0), 1);
+  EXPECT_EQ(thread_count(0), std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+}
+
+}  // namespace
+}  // namespace bisect::util
