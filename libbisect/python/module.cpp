@@ -5,13 +5,18 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <exception>
+#include <optional>
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "bisect/generate.hpp"
 #include "bisect/io.hpp"
 #include "bisect/poly_input.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "io/face_checks.hpp"
 
 namespace py = pybind11;
 using namespace bisect;
@@ -83,12 +88,137 @@ py::object json_loads(const std::string& s) { return py::module_::import("json")
 
 std::string violation_kind_name(ViolationKind k) { return to_string(k); }
 
+// A polyhedral input from Python: nodes (N, 3); faces, each a sequence of node indices (a
+// planar polygon) or a dict {"nodes": [...], "hole_of": k}; regions, each a sequence of face
+// indices or a dict {"faces": [...], "cavity": bool}. Checked as the file readers check theirs,
+// with faces, nodes and regions numbered from 0 in the messages.
+PolyInput poly_from_python(const NodeArray& nodes, const py::sequence& faces, const py::sequence& regions, const std::string& source) {
+  if (nodes.ndim() != 2 || nodes.shape(1) != 3) throw InputError("nodes must be an array of shape (N, 3)");
+  PolyInput in;
+  in.source = source.empty() ? std::string("input") : source;
+  const auto n = nodes.unchecked<2>();
+  for (py::ssize_t i = 0; i < n.shape(0); ++i) {
+    in.nodes.emplace_back(n(i, 0), n(i, 1), n(i, 2));
+    if (!std::isfinite(n(i, 0)) || !std::isfinite(n(i, 1)) || !std::isfinite(n(i, 2)))
+      throw InputError(in.source + ": node " + std::to_string(i) + " has a coordinate that is not a finite number");
+  }
+  io::Naming naming;
+  naming.base = 0;
+  naming.note = " (numbered from 0)";
+  for (py::ssize_t f = 0; f < py::ssize_t(faces.size()); ++f) {
+    PolyFace face;
+    const py::object item = faces[f];
+    if (py::isinstance<py::dict>(item)) {
+      const py::dict d = item.cast<py::dict>();
+      face.nodes = d["nodes"].cast<std::vector<Index>>();
+      if (d.contains("hole_of") && !d["hole_of"].is_none()) face.hole_of = d["hole_of"].cast<Index>();
+    } else {
+      face.nodes = item.cast<std::vector<Index>>();
+    }
+    for (Index v : face.nodes)
+      if (v < 0 || v >= Index(in.nodes.size()))
+        throw InputError(in.source + ": face " + std::to_string(f) + " refers to node " + std::to_string(v) + ", but there are " +
+                         std::to_string(in.nodes.size()) + " nodes (numbered from 0)");
+    if (face.hole_of >= py::ssize_t(faces.size()) || face.hole_of == Index(f))
+      throw InputError(in.source + ": face " + std::to_string(f) + " is a hole of face " + std::to_string(face.hole_of) + ", which is not another face");
+    io::check_face_size(face.nodes, Index(f), in.source, naming);
+    io::check_distinct_nodes(face.nodes, Index(f), in.source, naming);
+    io::check_face_shape(in.nodes, face.nodes, Index(f), in.source, naming, true);
+    in.faces.push_back(std::move(face));
+  }
+  for (py::ssize_t r = 0; r < py::ssize_t(regions.size()); ++r) {
+    PolyRegion region;
+    const py::object item = regions[r];
+    if (py::isinstance<py::dict>(item)) {
+      const py::dict d = item.cast<py::dict>();
+      region.faces = d["faces"].cast<std::vector<Index>>();
+      if (d.contains("cavity")) region.cavity = d["cavity"].cast<bool>();
+    } else {
+      region.faces = item.cast<std::vector<Index>>();
+    }
+    if (region.faces.empty()) throw InputError(in.source + ": region " + std::to_string(r) + " has no faces");
+    for (Index f : region.faces)
+      if (f < 0 || f >= Index(in.faces.size()))
+        throw InputError(in.source + ": region " + std::to_string(r) + " refers to face " + std::to_string(f) + ", but there are " +
+                         std::to_string(in.faces.size()) + " faces (numbered from 0)");
+    std::vector<bool> excused(in.faces.size(), false);
+    for (std::size_t f = 0; f < in.faces.size(); ++f) excused[f] = in.faces[f].hole_of >= 0;
+    if (const auto odd = io::first_odd_edge(in.faces, region.faces, &excused))
+      throw InputError(in.source + ": region " + std::to_string(r) + " is not closed: " + io::describe(*odd, in.nodes, naming));
+    in.regions.push_back(std::move(region));
+  }
+  if (in.regions.empty()) throw InputError(in.source + ": no regions");
+  return in;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "BisectMesh C++ core: quality measures, mesh validation, mesh and polyhedral I/O.";
+  m.doc() = "BisectMesh C++ core: the tetrahedral generator, quality measures, mesh validation, mesh and polyhedral I/O.";
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<MeshingError>(m, "MeshingError", PyExc_RuntimeError);
+  static py::exception<Cancelled> cancelled(m, "Cancelled", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Cancelled& e) {
+      cancelled(e.what());
+    }
+  });
+
+  m.def(
+      "generate",
+      [](const NodeArray& nodes, const py::sequence& faces, const py::sequence& regions, std::int64_t elements, double size, int order,
+         int optimize, int smooth, int slivers, int threads, bool merge_coplanar, const py::object& progress, const std::string& source) {
+        const PolyInput in = poly_from_python(nodes, faces, regions, source);
+        GenerateOptions opt;
+        opt.elements = elements;
+        opt.size = size;
+        opt.order = order;
+        opt.optimize_passes = optimize;
+        opt.smooth_passes = smooth;
+        opt.sliver_rounds = slivers;
+        opt.threads = threads;
+        opt.merge_coplanar = merge_coplanar;
+        // the callback runs on this thread (generate_mesh promises it) with the GIL taken back;
+        // an exception it raises cancels the run and reaches the caller unchanged
+        std::optional<py::error_already_set> raised;
+        if (!progress.is_none())
+          opt.progress = [&](double x) {
+            py::gil_scoped_acquire gil;
+            try {
+              const py::object r = progress(x);
+              return r.is_none() || r.cast<bool>();
+            } catch (py::error_already_set& e) {
+              raised.emplace(std::move(e));
+              return false;
+            }
+          };
+        TetMesh mesh;
+        GenerateStats st;
+        std::string stats;
+        try {
+          py::gil_scoped_release release;
+          mesh = generate_mesh(in, opt, &st);
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh)));
+        } catch (const Cancelled&) {
+          if (raised) throw std::move(*raised);
+          throw;
+        }
+        py::dict d = mesh_to_dict(mesh);
+        d["stats"] = json_loads(stats);
+        return d;
+      },
+      py::arg("nodes"), py::arg("faces"), py::arg("regions"), py::kw_only(), py::arg("elements") = 0, py::arg("size") = 0.0,
+      py::arg("order") = 1, py::arg("optimize") = 3, py::arg("smooth") = 3, py::arg("slivers") = 5, py::arg("threads") = 0,
+      py::arg("merge_coplanar") = true, py::arg("progress") = py::none(), py::arg("source") = "",
+      "Tetrahedral mesh of a polyhedral input, in-process (the pipeline of `bisect-mesh INPUT -o OUT`).\n\n"
+      "nodes (N, 3); faces: node index lists (planar polygons) or {'nodes': [...], 'hole_of': k}; regions: face "
+      "index lists or {'faces': [...], 'cavity': bool}; all numbered from 0. elements: the required number R, or "
+      "size: the spacing. progress(fraction) is called on this thread; returning False cancels (raises "
+      "Cancelled). Returns the mesh dict of read_mesh (tri_tag: the input face of each boundary triangle; region: "
+      "the input region of each tetrahedron) with 'stats', the --stats JSON as a dict. Raises InputError for bad "
+      "input, MeshingError when a stage cannot finish.");
 
   m.def(
       "element_quality",

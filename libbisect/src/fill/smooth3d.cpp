@@ -157,11 +157,16 @@ std::size_t repair_slivers(TetComplex& cx, std::vector<Vec3>& X, const std::vect
       const Tet u = cx.tet[t];
       if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;
       if (tet_worst(X, u) <= limit) continue;
-      Vec3 outward = Vec3::Zero();  // the largest face's area normal (faces' normals point out of t)
+      // the largest boundary face's area normal, else the largest face's (faces' normals point
+      // out of t): a flat tetrahedron's largest face may be an inner one, whose normal would
+      // send the node out of the mesh
+      Vec3 outward = Vec3::Zero();
+      bool on_boundary = false;
       for (int f = 0; f < 4; ++f) {
         const auto fv = cx.face(t, f);
         const Vec3 n = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]);
-        if (n.squaredNorm() > outward.squaredNorm()) outward = n;
+        const bool b = cx.nb[t][f] < 0;
+        if ((b && !on_boundary) || (b == on_boundary && n.squaredNorm() > outward.squaredNorm())) outward = n, on_boundary = b;
       }
       const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
       X.push_back(here - 0.5 * mean_edge(X, u) * outward.normalized());

@@ -99,10 +99,13 @@ void check_at(const std::string& rel, std::int64_t n) {
     for (int k = 0; k < 4 && !touches; ++k) touches = sharp.count(m.tet_node(t, k)) > 0;
     unexcused += !touches;
   }
-  // part.stl still keeps a few (8 at this size, the smallest 3 degrees): tetrahedra on its
-  // curved faces' facets, some of them skinny triangles of the STL itself, that neither node
-  // moves nor an inserted node remove. The target is none; this bound guards against regressions.
-  const std::size_t allowed = fs::path(rel).filename() == "part.stl" ? 12 : 0;
+  // part.stl still keeps a few (4 at this size, the smallest 3.1 degrees). Three stand on a
+  // short boundary edge of the STL's needle-shaped facets (0.016 or 0.038 beside sides of 0.3
+  // to 1.3): their far node would have to come within about that short edge to make them well
+  // shaped, which a spacing graded from the boundary's would do and the uniform interior spacing
+  // does not. The fourth is a flat one with a free node that no move tried improves. The target
+  // is none; this bound guards against regressions.
+  const std::size_t allowed = fs::path(rel).filename() == "part.stl" ? 8 : 0;
   ::testing::Test::RecordProperty("under_5_away_from_sharp_edges", std::to_string(unexcused));
   EXPECT_LE(unexcused, allowed) << rel << ": tetrahedra under 5 degrees away from sharp input edges (minimum " << s.dihedral_min.min << ")";
 }
