@@ -38,6 +38,7 @@ struct MeshOptions {
   int threads = 0;            // --threads N (0: one per core)
   int order = 1;              // --order 1|2
   bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
+  double grading = 0;         // --grading G (0: uniform interior spacing)
   bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
   bool quiet = false;
 };

@@ -31,6 +31,8 @@ const char* kUsage =
     "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 5)\n"
     "  --threads N     threads for the face grids and the cell fillings (default 0: one per\n"
     "                  core); the mesh is the same for every N\n"
+    "  --grading G     interior spacing grows from a short boundary edge's by G per unit of\n"
+    "                  distance, up to Np (default 0: uniform Np inside)\n"
     "  --boundary-flips  also re-triangulate the outer boundary within each input face by the\n"
     "                  2-2 transformation (thesis 7.5; off by default)\n"
     "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
@@ -121,6 +123,13 @@ int main(int argc, char** argv) {
       const long n = std::strtol(v.c_str(), &end, 10);
       if (end == v.c_str() || *end != '\0' || n < 0 || n > 100) return usage_error(a + " needs a number of passes from 0 to 100, not '" + v + "'");
       (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(n);
+    } else if (a == "--grading") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number");
+      char* end = nullptr;
+      const double g = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !(g >= 0) || !(g <= 10)) return usage_error(a + " needs a number from 0 to 10, not '" + v + "'");
+      mesh.grading = g;
     } else if (a == "--boundary-flips") {
       mesh.boundary_flips = true;
     } else if (a == "--order") {

@@ -55,6 +55,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.threads = opt.threads;
     go.order = opt.order;
     go.boundary_flips = opt.boundary_flips;
+    go.grading = opt.grading;
     GenerateStats st;
     const TetMesh mesh = generate_mesh(in, go, &st);
     write_mesh(mesh, opt.output);

@@ -26,6 +26,11 @@ struct GenerateOptions {
   // the face grids are already optimised and on the ../shared models it removed no more
   // slivers than it made
   bool boundary_flips = false;
+  // interior nodes graded from the boundary's fine spacing (graded_nodes.hpp): the size grows by
+  // this much per unit of distance from a short boundary edge up to Np; 0 (the default): the
+  // shrinking's uniform Np everywhere. Off by default: measured on the ../shared STL models it
+  // moved the slivers around rather than removing them (README, Tetrahedral meshes).
+  double grading = 0;
   // exactly coplanar neighbouring triangles (STL, OFF) merged into polygon faces first, so
   // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
   // number the merged faces
@@ -46,6 +51,7 @@ struct GenerateStats {
   std::int64_t flips = 0;             // local transformations applied, all stages
   std::int64_t sliver_moves = 0;      // node moves of the sliver repair
   std::int64_t fillings = 0;          // times the cells were filled while the count was sought
+  std::int64_t graded_nodes = 0;      // interior nodes placed by the grading from fine boundary spacing
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;

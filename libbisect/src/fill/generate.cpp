@@ -12,6 +12,7 @@
 #include "domain/merge_facets.hpp"
 #include "fill/cell_fill.hpp"
 #include "fill/cell_nodes.hpp"
+#include "fill/graded_nodes.hpp"
 #include "fill/smooth3d.hpp"
 #include "fill/tet_complex.hpp"
 #include "mesh2d/face_grids.hpp"
@@ -49,7 +50,7 @@ fill::Polytope cell_polytope(const PolyhedralModel& m, const ConvexCell& c) {
 }
 
 struct Built {
-  std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0;
+  std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0, graded_nodes = 0;
   std::vector<Vec3> X;
   std::vector<fill::Tet> tets;
   std::vector<Index> region;
@@ -61,7 +62,7 @@ struct Built {
 
 // Face grids and interior nodes at spacing np (7.4, 5.2): the nodes, not yet the tetrahedra.
 // `count_only`: the faces' nodes without their triangles, enough to count them.
-Built place_nodes(const Decomposition& d, double np, int threads, GenerateStats& st, bool count_only = false) {
+Built place_nodes(const Decomposition& d, double np, int threads, double grading, GenerateStats& st, bool count_only = false) {
   Built b;
   const auto t0 = Clock::now();
   mesh2d::FaceGridOptions fo;
@@ -72,13 +73,20 @@ Built place_nodes(const Decomposition& d, double np, int threads, GenerateStats&
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
   b.interior.assign(d.cells.size(), {});
+  std::vector<std::vector<Vec3>> uniform;
   for (std::size_t c = 0; c < d.cells.size(); ++c) {
     b.polys.push_back(cell_polytope(d.model, d.cells[c]));
-    for (const Vec3& p : fill::shrink_cell_nodes(b.polys.back(), np)) {
+    uniform.push_back(fill::shrink_cell_nodes(b.polys.back(), np));
+  }
+  // graded from the boundary's fine spacing (short edges); the shrinking's alone elsewhere
+  fill::GradedNodeStats gs;
+  const auto nodes = fill::graded_cell_nodes(b.polys, uniform, b.grids.nodes, b.grids.spacing, np, grading, &gs);
+  b.graded_nodes = static_cast<std::int64_t>(gs.added);
+  for (std::size_t c = 0; c < d.cells.size(); ++c)
+    for (const Vec3& p : nodes[c]) {
       b.X.push_back(p);
       b.interior[c].push_back(static_cast<Index>(b.X.size() - 1));
     }
-  }
   st.gen_nodes += since(t0);
   return b;
 }
@@ -126,11 +134,11 @@ double predict_tets(const NodeTally& n, double scale) { return scale * (6.2 * n.
 // bisection in log Np once two spacings bracket the count (on small models the count jumps with
 // the segments per edge and the shrinking layers, so it may not be met exactly). Only the nodes
 // are placed (a fraction of a filling).
-double search_spacing(const Decomposition& d, double start, double want, double scale, int threads, GenerateStats& st) {
+double search_spacing(const Decomposition& d, double start, double want, double scale, int threads, double grading, GenerateStats& st) {
   double lo = 0, hi = 0, trial = start, best = start, best_miss = 1e300;
   for (int round = 0; round < 10; ++round) {
     GenerateStats scratch;
-    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, threads, scratch, true)), scale);
+    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, threads, grading, scratch, true)), scale);
     st.gen_nodes += scratch.gen_nodes;
     const double miss = std::abs(predicted - want);
     if (miss < best_miss) best_miss = miss, best = trial;
@@ -288,10 +296,10 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   double used = np, last = -1, scale = 1, best_miss = 1e300;
   const double target = static_cast<double>(want);
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
-    const double spacing = opt.size > 0 ? opt.size : search_spacing(d, np, target, scale, run.threads, st);
+    const double spacing = opt.size > 0 ? opt.size : search_spacing(d, np, target, scale, run.threads, run.grading, st);
     if (last > 0 && std::abs(spacing / last - 1) < 1e-3) break;  // nothing new to try
     last = spacing;
-    Built again = place_nodes(d, spacing, run.threads, st);
+    Built again = place_nodes(d, spacing, run.threads, run.grading, st);
     fill_cells(d, again, run, st);
     ++st.fillings;
     const double count = static_cast<double>(again.tets.size());
@@ -307,10 +315,11 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
     GenerateStats scratch;
     double reach = 0;  // at least half the model's diameter
     for (const Vec3& p : d.model.nodes) reach = std::max(reach, (p - d.model.nodes.front()).norm());
-    const Built coarsest = place_nodes(d, 2 * reach, run.threads, scratch, true);
+    const Built coarsest = place_nodes(d, 2 * reach, run.threads, run.grading, scratch, true);
     st.count_floor = std::llround(predict_tets(tally_nodes(d.model, coarsest), scale));
   }
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
+  st.graded_nodes = b.graded_nodes;
   st.spacing = used;
   // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
   const auto t_opt = Clock::now();
@@ -376,7 +385,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
   std::ostringstream o;
   o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
-    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"fillings\": " << s.fillings << ", \"count_floor\": " << s.count_floor << ", \"times\": {\"init_geom\": " << s.init_geom
+    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor << ", \"times\": {\"init_geom\": " << s.init_geom
     << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes << ", \"gen_tets\": " << s.gen_tets
     << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total << "}, \"quality\": " << quality_json(q) << "}";
   return o.str();

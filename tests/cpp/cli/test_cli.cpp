@@ -218,7 +218,7 @@ TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
   q = run("quality '" + inp.string() + "'");
   EXPECT_EQ(q.code, 0) << q.out << q.err;
   EXPECT_NE(q.out.find("valid: yes"), std::string::npos) << q.out;
-  for (const char* bad : {"--order 3", "--threads -1", "--threads many"}) {
+  for (const char* bad : {"--order 3", "--threads -1", "--threads many", "--grading -1"}) {
     r = run(in + " -n 2000 " + bad + " -o '" + inp.string() + "'");
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_EQ(count_lines(r.err), 1) << bad << ": " << r.err;
