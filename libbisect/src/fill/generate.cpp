@@ -156,7 +156,7 @@ double search_spacing(const Decomposition& d, double start, double want, double 
 // follow the global ones in order, so the filling is the one the global ids would give.
 struct CellFilling {
   std::vector<Index> global;  // local node -> node of b.X (a helper: -1 until committed)
-  std::vector<Vec3> helper;   // the helper node, when one stayed in the mesh
+  std::vector<Vec3> helper;   // the helper node, when one was added (left out of the mesh when removed again)
   std::vector<fill::Tet> tets;
   fill::CellFillStats stats;
 };
