@@ -33,7 +33,7 @@ struct MeshOptions {
   double size = 0;            // -s: the nodal spacing itself, instead of -n
   int optimize_passes = 3;    // --optimize PASSES: global min-max transformation passes
   int smooth_passes = 3;      // --smooth PASSES: Laplace smoothing passes
-  int sliver_rounds = 5;      // --slivers ROUNDS: sliver repair rounds
+  int sliver_rounds = 8;      // --slivers ROUNDS: sliver repair rounds
   bool delaunay_insertion = true;   // --insertion delaunay|minmax
   int threads = 0;            // --threads N (0: one per core)
   int order = 1;              // --order 1|2

@@ -28,7 +28,7 @@ const char* kUsage =
     "                  at the middle of the straight edges\n"
     "  --optimize N    passes of min-max local transformations over the whole mesh (default 3)\n"
     "  --smooth N      passes of Laplace smoothing of interior nodes (default 3)\n"
-    "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 5)\n"
+    "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 8)\n"
     "  --threads N     threads for the face grids and the cell fillings (default 0: one per\n"
     "                  core); the mesh is the same for every N\n"
     "  --grading G     interior spacing grows from a short boundary edge's by G per unit of\n"

@@ -20,7 +20,7 @@ struct GenerateOptions {
   double size = 0;            // an absolute spacing Np instead of R, when > 0
   int optimize_passes = 3;    // global min-max transformation passes (7.5)
   int smooth_passes = 3;      // Laplace smoothing passes over interior nodes, one after each of those
-  int sliver_rounds = 5;      // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
+  int sliver_rounds = 8;      // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
   int order = 1;              // 1: 4-node tetrahedra; 2: 10-node, mid-nodes on the straight edges
   // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
   // the face grids are already optimised and on the ../shared models it removed no more

@@ -132,9 +132,27 @@ std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::a
     if (!cx.alive[last]) last = 0;
   }
   if (delaunay) st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
-  if (st.helper && collapse_helper(cx, centre)) {
-    st.helper_removed = true;
-    st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  // The helper goes (7.6) by the collapse onto the neighbour that leaves the best tetrahedra,
+  // else by flips, when the cell's worst tetrahedron is then no worse than with it: a cell
+  // without interior nodes whose faces are finely gridded keeps better tetrahedra around it.
+  if (st.helper) {
+    auto worst = [](const TetComplex& c) {
+      double w = 1e300;
+      for (std::size_t t = 0; t < c.tet.size(); ++t)
+        if (c.alive[t]) w = std::min(w, c.q[t]);
+      return w;
+    };
+    const double with_helper = worst(cx);
+    for (int how = 0; how < 2 && !st.helper_removed; ++how) {
+      TetComplex trial = cx;
+      if (!(how == 0 ? collapse_helper(trial, centre) : trial.remove_vertex(centre))) continue;
+      const std::int64_t flips = trial.improve_all(std::numeric_limits<std::int64_t>::max());
+      if (worst(trial) < with_helper) continue;
+      st.helper_removed = true;
+      st.flips += flips;
+      if (stats) *stats = st;
+      return trial.tets();
+    }
   }
   if (stats) *stats = st;
   return cx.tets();

@@ -3,9 +3,10 @@
 // star-shaped from any interior point), the star is improved by the local transformations, and
 // the other interior nodes are inserted one at a time (located by a walk; split inside a
 // tetrahedron, on a face or on an edge), each followed by local improvement around it. A cell
-// with no interior node gets a helper node at its centroid, removed at the end when a collapse
-// onto one of its neighbours leaves every tetrahedron positive (the thesis's flip sequence is
-// not guaranteed to remove it either; a helper that stays is a valid node of the mesh).
+// with no interior node gets a helper node at its centroid, removed at the end by the collapse
+// onto the neighbour that leaves the best tetrahedra or else by flips (TetComplex::remove_vertex:
+// edges at it taken out until a 4-1 flip removes it), either kept only when the cell's worst
+// tetrahedron is no worse than with the helper; a helper that stays is a valid node of the mesh.
 #pragma once
 #include <array>
 #include <cstdint>

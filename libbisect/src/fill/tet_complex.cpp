@@ -491,12 +491,19 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
   };
   double before = 1e300;
   for (std::size_t i = 0; i < k; ++i) before = std::min(before, q[ring[i]]);
+  std::vector<Tet> fresh;
+  if (!ring_triangulation(a, b, p.data(), k, before * (1 + 1e-9), &fresh)) return fail();
+  for (Index id : replace(std::vector<Index>(ring.begin(), ring.begin() + n), fresh))
+    for (int g = 0; g < 4; ++g) queue.push_back({id, g});
+  return true;
+}
+
+bool TetComplex::ring_triangulation(Index a, Index b, const Index* p, std::size_t k, double need, std::vector<Tet>* fresh) const {
   // best triangulation of the polygon (Klincsek's dynamic programme): each triangle (i, m, j)
   // makes two tetrahedra with a and b, valid when a lies on the side `sign` of it and b on the
   // other; the ring's order fixes which sign that is, so both are tried. Only triangulations
-  // better than `before` matter, so a part no better than it counts as impossible: most
+  // better than `need` matter, so a part no better than it counts as impossible: most
   // triangles are then rejected before their tetrahedra are graded.
-  const double need = before * (1 + 1e-9);
   std::array<double, kMaxRing * kMaxRing> best;
   std::array<int, kMaxRing * kMaxRing> split;
   for (int sign : {1, -1}) {
@@ -517,25 +524,61 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
           if (worst > floor) best[i * k + j] = worst, split[i * k + j] = static_cast<int>(m);
         }
       }
-    const double after = best[0 * k + k - 1];
-    if (after < 0) continue;
-    std::vector<Tet> fresh;
+    if (best[0 * k + k - 1] < 0) continue;
+    fresh->clear();
     std::vector<std::pair<std::size_t, std::size_t>> todo{{0, k - 1}};
     while (!todo.empty()) {
       const auto [i, j] = todo.back();
       todo.pop_back();
       if (j < i + 2) continue;
       const std::size_t m = static_cast<std::size_t>(split[i * k + j]);
-      fresh.push_back(sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a});
-      fresh.push_back(sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b});
+      fresh->push_back(sign > 0 ? Tet{p[i], p[m], p[j], a} : Tet{p[m], p[i], p[j], a});
+      fresh->push_back(sign > 0 ? Tet{p[m], p[i], p[j], b} : Tet{p[i], p[m], p[j], b});
       todo.push_back({i, m});
       todo.push_back({m, j});
     }
-      for (Index id : replace(std::vector<Index>(ring.begin(), ring.begin() + n), fresh))
-      for (int g = 0; g < 4; ++g) queue.push_back({id, g});
     return true;
   }
-  return fail();
+  return false;
+}
+
+bool TetComplex::remove_vertex(Index v) {
+  for (;;) {
+    std::vector<Index> around;
+    for (std::size_t t = 0; t < tet.size(); ++t)
+      if (alive[t] && corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+    if (around.size() < 4) return false;  // not an interior node
+    for (Index t : around)  // a face at v that holds (the boundary): v is not inside
+      for (int f = 0; f < 4; ++f)
+        if (tet[t][f] != v && is_constrained(t, f)) return false;
+    if (around.size() == 4) {  // 4-1: the four faces opposite v close up into one tetrahedron
+      Tet m = tet[around[0]];
+      const int c = corner_of(around[0], v);
+      for (Index t : around)
+        for (Index x : tet[t])
+          if (x != v && std::find(m.begin(), m.end(), x) == m.end()) m[c] = x;
+      if (!positive(X, m)) return false;
+      replace(around, {m});
+      return true;
+    }
+    // 3-2, 4-4 and larger: an edge (v, x) taken out of its ring, whichever triangulation of the
+    // ring is best; v then lies in two tetrahedra fewer
+    bool removed = false;
+    for (std::size_t i = 0; i < around.size() && !removed; ++i)
+      for (Index x : tet[around[i]]) {
+        if (x == v) continue;
+        std::array<Index, kMaxRing> ring, p;
+        bool closed = false, held = false;
+        const int n = edge_ring(around[i], v, x, static_cast<int>(kMaxRing), ring.data(), p.data(), &closed, &held);
+        if (!closed || n < 3 || n > static_cast<int>(kMaxRing)) continue;
+        std::vector<Tet> fresh;
+        if (!ring_triangulation(v, x, p.data(), static_cast<std::size_t>(n), 0, &fresh)) continue;
+        replace(std::vector<Index>(ring.begin(), ring.begin() + n), fresh);
+        removed = true;
+        break;
+      }
+    if (!removed) return false;
+  }
 }
 
 std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops) {

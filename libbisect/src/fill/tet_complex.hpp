@@ -100,6 +100,11 @@ class TetComplex {
   // its best (3-2 and the 4-4 of 7.5 are its rings of 3 and 4; larger rings reach further out
   // of the local minima 7.6.1 describes). Returns the number applied.
   std::int64_t improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops);
+  // Removes the interior node v by flips (7.6: the helper vertex): edges at v are taken out of
+  // their rings (the ring's best triangulation, whatever its quality) until v is in four
+  // tetrahedra, which a 4-1 flip merges. False, with v still in the complex, when no edge at v
+  // can go (its ring is longer than kMaxRing or has no valid triangulation).
+  bool remove_vertex(Index v);
   // improve() from every face of the given tetrahedra (new or changed ones), without a bound.
   std::int64_t improve_around(const std::vector<Index>& tets);
   // improve() from every unconstrained interior face.
@@ -143,6 +148,9 @@ class TetComplex {
   bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
   bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
   bool try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue);
+  // The ring polygon p[0..k) around edge (a, b) triangulated at its best by dynamic programming,
+  // every tetrahedron's key above `need`: the tetrahedra into `fresh`; false when none is.
+  bool ring_triangulation(Index a, Index b, const Index* p, std::size_t k, double need, std::vector<Tet>* fresh) const;
   bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
 };
 

@@ -3,6 +3,7 @@
 // min-max transformations never touching constrained faces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "bisect/quality.hpp"
@@ -136,6 +137,42 @@ TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
   held.constrain({face_key(0, 1, 2)});
   EXPECT_EQ(held.improve_all(10), 0);
   EXPECT_EQ(held.live_count(), 2u);
+}
+
+// Removing a node by flips (the helper of 7.6): the cube's six tetrahedra with a node at the
+// centre inserted (twelve around it, star of the centre), and a tetrahedron split 1-4; the
+// node goes, the boundary and the volume stay, every tetrahedron is positive.
+TEST(TetComplex, RemoveVertexByFlips) {
+  {
+    std::vector<Vec3> X = cube_nodes();
+    X.push_back({0.52, 0.47, 0.55});  // 8: near the centre, off the diagonal
+    TetComplex cx(X);
+    cx.build(cube_tets(X));
+    ASSERT_FALSE(cx.insert(8, 0).empty());
+    const std::size_t faces = boundary_faces(cx);
+    std::size_t around = 0;
+    for (const Tet& t : cx.tets()) around += std::find(t.begin(), t.end(), 8) != t.end();
+    ASSERT_GE(around, 4u);
+    EXPECT_TRUE(cx.remove_vertex(8));
+    for (const Tet& t : cx.tets()) EXPECT_EQ(std::find(t.begin(), t.end(), 8), t.end());
+    expect_consistent(cx);
+    EXPECT_EQ(boundary_faces(cx), faces);
+    EXPECT_NEAR(volume(cx), 1, 1e-12);
+    EXPECT_FALSE(cx.remove_vertex(0));  // a corner, in every tetrahedron: on the boundary, it stays
+    EXPECT_NEAR(volume(cx), 1, 1e-12);
+  }
+  {
+    std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}};
+    TetComplex cx(X);
+    Tet t{0, 1, 2, 3};
+    if (!positive(X, t)) std::swap(t[0], t[1]);
+    cx.build({t});
+    ASSERT_EQ(cx.insert(4, 0).size(), 4u);
+    EXPECT_TRUE(cx.remove_vertex(4));  // 4-1
+    ASSERT_EQ(cx.live_count(), 1u);
+    expect_consistent(cx);
+    EXPECT_FALSE(cx.remove_vertex(0));  // a boundary node is not removed
+  }
 }
 
 // The 2-2 transformation (7.5): two tetrahedra over a thin rhombus on the outer boundary, its
