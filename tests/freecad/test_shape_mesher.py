@@ -1,0 +1,79 @@
+"""bisectmesh.shape_mesher.mesh_shape on solids made in FreeCAD: valid meshes of the solid's
+volume, a node group per B-rep face whose nodes lie on that face, a volume group per solid of a
+compound of solids sharing a face, the interface's nodes shared."""
+
+import unittest
+
+import numpy as np
+
+import FreeCAD
+import Part
+import BOPTools.SplitAPI
+
+import bisectmesh
+from bisectmesh import shape_mesher
+
+
+def group(mesh, name):
+    for g in mesh.Groups:
+        if mesh.getGroupName(g) == name:
+            return list(mesh.getGroupElements(g))
+    raise KeyError(name)
+
+
+def mesh_volume(mesh):
+    arrays = bisectmesh.mesh_arrays(mesh)
+    p, t = arrays.nodes, arrays.tets
+    a, b, c, d = (p[t[:, k]] for k in range(4))
+    return float(np.sum(np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a))) / 6)
+
+
+class ShapeMesherTest(unittest.TestCase):
+    def test_box_minus_cylinder(self):
+        box = Part.makeBox(10, 10, 10)
+        shape = box.cut(Part.makeCylinder(3, 10, FreeCAD.Vector(5, 5, 0)))
+        for order in (1, 2):
+            mesh = shape_mesher.mesh_shape(shape, elements=3000, order=order, resolution=0.05)
+            report = bisectmesh.quality(mesh)
+            self.assertTrue(report["valid"], report.get("violations"))
+            self.assertEqual(report["order"], order)
+            # the facets cut the cylinder's wall by at most the deflection
+            wall = 2 * 3.14159265 * 3 * 10
+            self.assertAlmostEqual(mesh_volume(mesh), shape.Volume, delta=0.05 * wall)
+            for k, face in enumerate(shape.Faces):
+                ids = group(mesh, "Face%d_Nodes" % (k + 1))
+                self.assertGreater(len(ids), 3, k)
+                on_face = 0
+                for n in ids:
+                    p = mesh.getNodeById(n)
+                    on_face += face.distToShape(Part.Vertex(p))[0] < 1e-6
+                # every node the generator placed on a facet of the cylinder is projected onto it
+                # unless that would invert a tetrahedron
+                self.assertGreaterEqual(on_face, 0.95 * len(ids), (k, on_face, len(ids)))
+                self.assertGreater(len(mesh.getNodesByFace(face)), 3, k)
+
+    def test_two_solids_share_their_interface(self):
+        b1 = Part.makeBox(10, 10, 10)
+        b2 = Part.makeBox(10, 10, 10, FreeCAD.Vector(10, 0, 0))
+        shape = BOPTools.SplitAPI.booleanFragments([b1, b2], "CompSolid")
+        self.assertEqual(len(shape.Solids), 2)
+        mesh = shape_mesher.mesh_shape(shape, elements=4000, order=1)
+        self.assertTrue(bisectmesh.quality(mesh)["valid"])
+        v1, v2 = group(mesh, "Solid1"), group(mesh, "Solid2")
+        self.assertEqual(len(v1) + len(v2), mesh.VolumeCount)
+        nodes1 = {n for e in v1 for n in mesh.getElementNodes(e)}
+        nodes2 = {n for e in v2 for n in mesh.getElementNodes(e)}
+        shared = nodes1 & nodes2
+        self.assertGreater(len(shared), 10)
+        for n in shared:
+            self.assertAlmostEqual(mesh.getNodeById(n).x, 10.0, places=9)
+
+    def test_errors(self):
+        with self.assertRaises(ValueError):
+            shape_mesher.mesh_shape(Part.makeBox(1, 1, 1), order=1)  # neither elements nor size
+        with self.assertRaises(ValueError):
+            shape_mesher.mesh_shape(Part.makeBox(1, 1, 1).Faces[0], elements=100)  # no solid
+
+
+if __name__ == "__main__":
+    unittest.main()
