@@ -88,6 +88,13 @@ py::object json_loads(const std::string& s) { return py::module_::import("json")
 
 std::string violation_kind_name(ViolationKind k) { return to_string(k); }
 
+// The indices an input item holds: the item itself (a sequence), or its entry `key` when it is a
+// dict (whose other entries the caller reads).
+std::vector<Index> index_list(const py::object& item, const char* key) {
+  if (py::isinstance<py::dict>(item)) return item.cast<py::dict>()[key].cast<std::vector<Index>>();
+  return item.cast<std::vector<Index>>();
+}
+
 // A polyhedral input from Python: nodes (N, 3); faces, each a sequence of node indices (a
 // planar polygon) or a dict {"nodes": [...], "hole_of": k}; regions, each a sequence of face
 // indices or a dict {"faces": [...], "cavity": bool}. Checked as the file readers check theirs,
@@ -108,12 +115,10 @@ PolyInput poly_from_python(const NodeArray& nodes, const py::sequence& faces, co
   for (py::ssize_t f = 0; f < py::ssize_t(faces.size()); ++f) {
     PolyFace face;
     const py::object item = faces[f];
+    face.nodes = index_list(item, "nodes");
     if (py::isinstance<py::dict>(item)) {
       const py::dict d = item.cast<py::dict>();
-      face.nodes = d["nodes"].cast<std::vector<Index>>();
       if (d.contains("hole_of") && !d["hole_of"].is_none()) face.hole_of = d["hole_of"].cast<Index>();
-    } else {
-      face.nodes = item.cast<std::vector<Index>>();
     }
     for (Index v : face.nodes)
       if (v < 0 || v >= Index(in.nodes.size()))
@@ -129,13 +134,8 @@ PolyInput poly_from_python(const NodeArray& nodes, const py::sequence& faces, co
   for (py::ssize_t r = 0; r < py::ssize_t(regions.size()); ++r) {
     PolyRegion region;
     const py::object item = regions[r];
-    if (py::isinstance<py::dict>(item)) {
-      const py::dict d = item.cast<py::dict>();
-      region.faces = d["faces"].cast<std::vector<Index>>();
-      if (d.contains("cavity")) region.cavity = d["cavity"].cast<bool>();
-    } else {
-      region.faces = item.cast<std::vector<Index>>();
-    }
+    region.faces = index_list(item, "faces");
+    if (py::isinstance<py::dict>(item) && item.cast<py::dict>().contains("cavity")) region.cavity = item.cast<py::dict>()["cavity"].cast<bool>();
     if (region.faces.empty()) throw InputError(in.source + ": region " + std::to_string(r) + " has no faces");
     for (Index f : region.faces)
       if (f < 0 || f >= Index(in.faces.size()))

@@ -239,20 +239,19 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, progre
     for e, t in enumerate(tets):
         mesh.addVolume([int(t[j]) + 1 for j in perm], e + 1)
         volumes.setdefault(int(region[e]), []).append(e + 1)
-    face_ids = {}
+    face_ids, face_nodes = {}, {}  # per B-rep face: its triangles' element ids, its nodes' ids
     next_id = len(tets) + 1
     for t, k in zip(tris, tri_face):
-        corners = [int(v) + 1 for v in t]
-        mesh.addFace(corners, next_id)
+        node_ids = [int(v) + 1 for v in t]
+        mesh.addFace(node_ids, next_id)
         face_ids.setdefault(int(k), []).append(next_id)
+        face_nodes.setdefault(int(k), set()).update(node_ids)
         next_id += 1
     for k in range(len(poly.brep_faces)):
-        ids = face_ids.get(k, [])
-        nodes_on = sorted({int(v) + 1 for t, kk in zip(tris, tri_face) if kk == k for v in t})
         g = mesh.addGroup("Face%d_Nodes" % (k + 1), "Node")
-        mesh.addGroupElements(g, nodes_on)
+        mesh.addGroupElements(g, sorted(face_nodes.get(k, ())))
         g = mesh.addGroup("Face%d_Faces" % (k + 1), "Face")
-        mesh.addGroupElements(g, ids)
+        mesh.addGroupElements(g, face_ids.get(k, []))
     for r in range(len(poly.solids)):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
         mesh.addGroupElements(g, volumes.get(r, []))

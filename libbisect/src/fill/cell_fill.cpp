@@ -27,9 +27,7 @@ std::vector<Tet> star(const std::vector<Vec3>& X, const std::vector<std::array<I
 // Removes the helper node v by collapsing it onto the neighbour that leaves the best
 // tetrahedra, when every changed tetrahedron stays positive. Returns whether it went.
 bool collapse_helper(TetComplex& cx, Index v) {
-  std::vector<Index> around;
-  for (std::size_t t = 0; t < cx.tet.size(); ++t)
-    if (cx.alive[t] && cx.corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+  const std::vector<Index> around = cx.tets_at(v);
   std::vector<Index> neighbours;
   for (Index t : around)
     for (Index w : cx.tet[t])

@@ -108,6 +108,13 @@ int TetComplex::corner_of(Index t, Index v) const {
   return -1;
 }
 
+std::vector<Index> TetComplex::tets_at(Index v) const {
+  std::vector<Index> around;
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t] && corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+  return around;
+}
+
 int TetComplex::face_towards(Index t, Index other) const {
   for (int f = 0; f < 4; ++f)
     if (nb[t][f] == other) return f;
@@ -393,12 +400,14 @@ namespace {
 // poorer old one's angle when that was below.
 constexpr double kMinBoundaryAngle = 0.3490658503988659;
 
+// The angle at p of the triangle p, u, v (radians).
+double corner_angle(const Vec3& p, const Vec3& u, const Vec3& v) { return std::atan2((u - p).cross(v - p).norm(), (u - p).dot(v - p)); }
+
 // The smallest angle of a triangle in 3D, radians: the one facing the shortest side.
 double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm(), ab = (b - a).squaredNorm();
-  const Vec3 &p = bc <= ca && bc <= ab ? a : ca <= ab ? b : c;  // the corner facing it
-  const Vec3 &u = &p == &a ? b : &p == &b ? c : a, &v = &p == &a ? c : &p == &b ? a : b;
-  return std::atan2((u - p).cross(v - p).norm(), (u - p).dot(v - p));
+  if (bc <= ca && bc <= ab) return corner_angle(a, b, c);
+  return ca <= ab ? corner_angle(b, c, a) : corner_angle(c, a, b);
 }
 
 }  // namespace
@@ -544,9 +553,7 @@ bool TetComplex::ring_triangulation(Index a, Index b, const Index* p, std::size_
 
 bool TetComplex::remove_vertex(Index v) {
   for (;;) {
-    std::vector<Index> around;
-    for (std::size_t t = 0; t < tet.size(); ++t)
-      if (alive[t] && corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+    const std::vector<Index> around = tets_at(v);
     if (around.size() < 4) return false;  // not an interior node
     for (Index t : around)  // a face at v that holds (the boundary): v is not inside
       for (int f = 0; f < 4; ++f)

@@ -79,6 +79,7 @@ class TetComplex {
   std::array<Index, 3> face(Index t, int f) const;
   bool is_constrained(Index t, int f) const;
   int corner_of(Index t, Index v) const;  // -1 when v is not a corner
+  std::vector<Index> tets_at(Index v) const;  // the live tetrahedra with corner v (a full scan)
   int face_towards(Index t, Index other) const;  // the face of t shared with `other`, -1 if none
 
   // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
