@@ -18,10 +18,11 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = icon_path("BisectMesh.svg")
 
     def Initialize(self):
-        from bisectmesh.gui import command_quality
+        from bisectmesh.gui import command_mesh, command_quality
 
+        command_mesh.register()
         command_quality.register()
-        commands = [command_quality.COMMAND_NAME]
+        commands = [command_mesh.COMMAND_NAME, command_quality.COMMAND_NAME]
         self.appendToolbar("BisectMesh", commands)
         self.appendMenu("&BisectMesh", commands)
 
@@ -32,9 +33,13 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         pass
 
     def ContextMenu(self, recipient):
-        from bisectmesh.gui import command_quality
+        from bisectmesh.gui import command_mesh, command_quality
 
-        if recipient == "Tree" and command_quality.selected_fem_mesh() is not None:
+        if recipient != "Tree":
+            return
+        if command_mesh.selected_solid() is not None:
+            self.appendContextMenu("", [command_mesh.COMMAND_NAME])
+        if command_quality.selected_fem_mesh() is not None:
             self.appendContextMenu("", [command_quality.COMMAND_NAME])
 
     def GetClassName(self):

@@ -154,6 +154,7 @@ PolyInput poly_from_python(const NodeArray& nodes, const py::sequence& faces, co
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
+  const GenerateOptions kDefaults;
   m.doc() = "BisectMesh C++ core: the tetrahedral generator, quality measures, mesh validation, mesh and polyhedral I/O.";
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<MeshingError>(m, "MeshingError", PyExc_RuntimeError);
@@ -169,8 +170,20 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "generate",
       [](const NodeArray& nodes, const py::sequence& faces, const py::sequence& regions, std::int64_t elements, double size, int order,
-         int optimize, int smooth, int slivers, int threads, bool merge_coplanar, const py::object& progress, const std::string& source) {
-        const PolyInput in = poly_from_python(nodes, faces, regions, source);
+         int optimize, int smooth, int slivers, double grading, bool boundary_flips, int threads, bool merge_coplanar,
+         const py::object& node_spacing, const py::object& progress, const std::string& source) {
+        PolyInput in = poly_from_python(nodes, faces, regions, source);
+        if (!node_spacing.is_none()) {
+          const auto hint = node_spacing.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+          if (hint.ndim() != 1 || std::size_t(hint.shape(0)) != in.nodes.size())
+            throw InputError(in.source + ": node_spacing needs one value per node (" + std::to_string(in.nodes.size()) + ")");
+          const double* h = hint.data();
+          for (std::size_t i = 0; i < in.nodes.size(); ++i)
+            if (!(std::isfinite(h[i]) && h[i] >= 0))
+              throw InputError(in.source + ": node " + std::to_string(i) + " asks for spacing " + std::to_string(h[i]) +
+                               "; give a positive number, or 0 for no hint");
+          in.node_spacing.assign(h, h + in.nodes.size());
+        }
         GenerateOptions opt;
         opt.elements = elements;
         opt.size = size;
@@ -178,6 +191,8 @@ PYBIND11_MODULE(_core, m) {
         opt.optimize_passes = optimize;
         opt.smooth_passes = smooth;
         opt.sliver_rounds = slivers;
+        opt.grading = grading;
+        opt.boundary_flips = boundary_flips;
         opt.threads = threads;
         opt.merge_coplanar = merge_coplanar;
         // the callback runs on this thread (generate_mesh promises it) with the GIL taken back;
@@ -210,12 +225,18 @@ PYBIND11_MODULE(_core, m) {
         return d;
       },
       py::arg("nodes"), py::arg("faces"), py::arg("regions"), py::kw_only(), py::arg("elements") = 0, py::arg("size") = 0.0,
-      py::arg("order") = 1, py::arg("optimize") = 3, py::arg("smooth") = 3, py::arg("slivers") = 5, py::arg("threads") = 0,
-      py::arg("merge_coplanar") = true, py::arg("progress") = py::none(), py::arg("source") = "",
+      // the defaults are GenerateOptions' own, so that Python and the CLI mesh alike
+      py::arg("order") = kDefaults.order, py::arg("optimize") = kDefaults.optimize_passes,
+      py::arg("smooth") = kDefaults.smooth_passes, py::arg("slivers") = kDefaults.sliver_rounds,
+      py::arg("grading") = kDefaults.grading, py::arg("boundary_flips") = kDefaults.boundary_flips,
+      py::arg("threads") = kDefaults.threads, py::arg("merge_coplanar") = kDefaults.merge_coplanar,
+      py::arg("node_spacing") = py::none(), py::arg("progress") = py::none(), py::arg("source") = "",
       "Tetrahedral mesh of a polyhedral input, in-process (the pipeline of `bisect-mesh INPUT -o OUT`).\n\n"
       "nodes (N, 3); faces: node index lists (planar polygons) or {'nodes': [...], 'hole_of': k}; regions: face "
       "index lists or {'faces': [...], 'cavity': bool}; all numbered from 0. elements: the required number R, or "
-      "size: the spacing. progress(fraction) is called on this thread; returning False cancels (raises "
+      "size: the spacing. grading > 0 grades the interior from fine boundary spacing (--grading); boundary_flips: "
+      "the 2-2 transformation on the boundary (--boundary-flips). node_spacing (N,): the element size each node asks "
+      "for (a density hint; 0: none); the face grids space their nodes no wider near it. progress(fraction) is called on this thread; returning False cancels (raises "
       "Cancelled). Returns the mesh dict of read_mesh (tri_tag: the input face of each boundary triangle; region: "
       "the input region of each tetrahedron) with 'stats', the --stats JSON as a dict. Raises InputError for bad "
       "input, MeshingError when a stage cannot finish.");

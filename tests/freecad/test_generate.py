@@ -107,6 +107,22 @@ class GenerateBindingTest(unittest.TestCase):
             core().generate(nodes, faces, regions)
         with self.assertRaisesRegex(core().InputError, "element order 3"):
             core().generate(nodes, faces, regions, elements=1000, order=3)
+        with self.assertRaisesRegex(core().InputError, "node_spacing needs one value per node"):
+            core().generate(nodes, faces, regions, elements=1000, node_spacing=[0.1])
+        with self.assertRaisesRegex(core().InputError, "node 3 asks for spacing"):
+            hint = np.zeros(len(nodes))
+            hint[3] = -1
+            core().generate(nodes, faces, regions, elements=1000, node_spacing=hint)
+
+    def test_node_spacing_hints_refine_near_their_nodes(self):
+        nodes, faces, regions = two_boxes()
+        plain = core().generate(nodes, faces, regions, size=2.0)
+        hint = np.zeros(len(nodes))
+        hint[:4] = 0.25  # the corners of the left box's face z = 0: its edges in 4 pieces each
+        hinted = core().generate(nodes, faces, regions, size=2.0, node_spacing=hint)
+        self.assertGreaterEqual(len(hinted["nodes"]), len(plain["nodes"]) + 4 * 3)
+        low = np.array(hinted["nodes"])[:, 2] < 1e-12
+        self.assertGreaterEqual(int(low.sum()), 4 + 4 * 3)
 
 
 if __name__ == "__main__":

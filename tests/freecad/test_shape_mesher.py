@@ -37,6 +37,9 @@ class ShapeMesherTest(unittest.TestCase):
             report = bisectmesh.quality(mesh)
             self.assertTrue(report["valid"], report.get("violations"))
             self.assertEqual(report["order"], order)
+            # the wall's ruling strips are single quadrilateral faces, not two needle triangles
+            # each (those gave 0.3 degrees here): measured 7.9
+            self.assertGreater(report["dihedral_min"], 5.0)
             # the facets cut the cylinder's wall by at most the deflection
             wall = 2 * 3.14159265 * 3 * 10
             self.assertAlmostEqual(mesh_volume(mesh), shape.Volume, delta=0.05 * wall)
@@ -67,6 +70,42 @@ class ShapeMesherTest(unittest.TestCase):
         self.assertGreater(len(shared), 10)
         for n in shared:
             self.assertAlmostEqual(mesh.getNodeById(n).x, 10.0, places=9)
+
+    def test_resolution(self):
+        shape = Part.makeBox(10, 20, 30)
+        # FreeCAD's view rule: the mean of the bounding box's sides times the deviation in percent
+        self.assertAlmostEqual(shape_mesher.tessellation_parameters(shape, {"deviation": 0.5})[0], 60 / 300 * 0.5)
+        self.assertEqual(shape_mesher.tessellation_parameters(shape, 0.01), (0.01, shape_mesher.DEFAULT_ANGULAR_DEFLECTION))
+        self.assertEqual(shape_mesher.tessellation_parameters(shape, {"deflection": 0.2, "angular_deflection": 10}), (0.2, 10.0))
+        with self.assertRaisesRegex(ValueError, "unknown key"):
+            shape_mesher.tessellation_parameters(shape, {"Deviation": 0.5})
+        with self.assertRaisesRegex(ValueError, "must be positive"):
+            shape_mesher.tessellation_parameters(shape, 0)
+        # without a GUI, a Part object's resolution is FreeCAD's default from the preferences
+        doc = FreeCAD.newDocument("Resolution")
+        try:
+            obj = doc.addObject("Part::Box", "Box")
+            res = shape_mesher.view_resolution(obj)
+            self.assertEqual(set(res), {"deviation", "angular_deflection"})
+            self.assertGreater(res["deviation"], 0)
+        finally:
+            FreeCAD.closeDocument(doc.Name)
+        # a finer angular deflection gives more strips on a cylinder's wall
+        cyl = Part.makeCylinder(5, 10)
+        coarse = shape_mesher.polyhedral_input(cyl, {"deviation": 0.5, "angular_deflection": 30})
+        fine = shape_mesher.polyhedral_input(cyl, {"deviation": 0.5, "angular_deflection": 10})
+        self.assertGreater(len(fine.faces), len(coarse.faces) + 10)
+
+    def test_cancel_before_and_after_the_generator(self):
+        shape = Part.makeBox(10, 10, 10)
+        calls = []
+        with self.assertRaises(bisectmesh.core().Cancelled):
+            shape_mesher.mesh_shape(shape, elements=2000, progress=lambda x: calls.append(x) or False)
+        self.assertEqual(calls, [0.0])  # before the tessellation
+        calls.clear()
+        with self.assertRaises(bisectmesh.core().Cancelled):  # only once the generator is done
+            shape_mesher.mesh_shape(shape, elements=2000, progress=lambda x: calls.append(x) or x < 1.0)
+        self.assertEqual(calls[-1], 1.0)
 
     def test_errors(self):
         with self.assertRaises(ValueError):

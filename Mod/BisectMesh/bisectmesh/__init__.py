@@ -3,7 +3,9 @@
 The macro API (the workbench's commands are thin wrappers over it)::
 
     import bisectmesh
-    report = bisectmesh.quality(femmesh)   # a Fem.FemMesh or a FEM mesh object
+    mesh = bisectmesh.mesh_shape(part_obj.Shape, elements=20000, order=2,
+                                 resolution=bisectmesh.view_resolution(part_obj))   # a Fem.FemMesh
+    report = bisectmesh.quality(mesh)   # of a Fem.FemMesh or a FEM mesh object
     report["valid"], report["gamma_mean"], report["measures"]["gamma"]["histogram"]
 
 The measures are defined once in the C++ core (``libbisect/include/bisect/quality.hpp``) and
@@ -15,6 +17,8 @@ __version__ = "0.1.0"
 
 MEASURES = ("dihedral_min", "dihedral_max", "solid_angle_min", "gamma", "alpha")
 
+from .mesh_object import make_mesh_object  # noqa: E402,F401  (imports FreeCAD only when called)
+
 
 def core():
     """The compiled module ``bisectmesh._core``, with a plain message when it is missing."""
@@ -25,6 +29,23 @@ def core():
             "bisectmesh._core, the compiled part of BisectMesh, cannot be loaded (%s). Build it with "
             "CMake (target bisectmesh_core) and install the workbench again." % err) from err
     return _core
+
+
+def mesh_shape(shape, elements=None, size=None, **options):
+    """A tetrahedral ``Fem.FemMesh`` of the solids of a Part shape, meshed in-process; see
+    :func:`bisectmesh.shape_mesher.mesh_shape` for the options (order, resolution, hints,
+    optimize, smooth, progress, threads, report)."""
+    from .shape_mesher import mesh_shape as run
+
+    return run(shape, elements=elements, size=size, **options)
+
+
+def view_resolution(obj):
+    """{"deviation": percent, "angular_deflection": degrees} of a Part object's view (FreeCAD's
+    defaults without a GUI); pass it as ``mesh_shape(..., resolution=...)``."""
+    from .shape_mesher import view_resolution as read
+
+    return read(obj)
 
 
 def _plain(value):

@@ -28,6 +28,10 @@ struct PolyInput {
   std::vector<PolyRegion> regions;
   std::int64_t required_elements = 0;  // R of the .poly header; 0 when the format has none
   std::string source;                  // file name, for messages
+  // Optional, one per node: the element size the node asks for (a density hint, e.g. from a CAD
+  // tessellation's resolution); the face grids space their nodes no wider near it. Empty or 0:
+  // no hint.
+  std::vector<double> node_spacing;
 };
 
 // Thesis 4.6.1: outer polygons, holes (negative node count) and sub-domains.

@@ -43,6 +43,7 @@ class PolyhedralModel {
   std::vector<ModelRegion> regions;  // meshable regions only: cavities are the -1 side of faces
   std::string source;                // input name, for messages
   double size = 1;                   // bounding-box diagonal: the scale of absolute tolerances
+  std::vector<double> node_spacing;  // PolyInput::node_spacing of the input nodes (the first ids)
 
   Index add_node(const Vec3& p);
   Index add_face(ModelFace f);  // registers the face's nodes; returns its id

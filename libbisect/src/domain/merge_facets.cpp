@@ -59,6 +59,7 @@ PolyInput merge_coplanar_triangles(const PolyInput& in, std::size_t* merged_face
   out.nodes = in.nodes;
   out.required_elements = in.required_elements;
   out.source = in.source;
+  out.node_spacing = in.node_spacing;
   std::vector<std::vector<Index>> new_faces_of(nf);  // old face -> the new faces standing for it
   std::vector<Index> old_to_new(nf, -1);
   std::size_t merged = 0;

@@ -119,6 +119,10 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
   for (const Vec3& p : in.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   m.size = in.nodes.empty() ? 1.0 : std::max((hi - lo).norm(), 1e-300);
+  if (!in.node_spacing.empty() && in.node_spacing.size() != in.nodes.size())
+    throw InputError(in.source + ": " + std::to_string(in.node_spacing.size()) + " node spacings for " +
+                     std::to_string(in.nodes.size()) + " nodes");
+  m.node_spacing = in.node_spacing;
   PreparationReport rep;
 
   // Faces: outer loop counter-clockwise around its Newell normal, holes clockwise.
@@ -152,6 +156,7 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
     PolyhedralModel fresh;
     fresh.source = m.source;
     fresh.size = m.size;
+    fresh.node_spacing = m.node_spacing;
     for (const Vec3& p : m.nodes) fresh.add_node(p);
     for (ModelFace& f : m.faces) fresh.add_face(std::move(f));
     m = std::move(fresh);

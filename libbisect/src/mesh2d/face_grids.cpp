@@ -15,12 +15,15 @@ namespace {
 
 std::pair<Index, Index> edge_key(Index a, Index b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
-// Every edge of the live faces discretised once: node spacings no larger than h nor than the
-// node's shortest edge, inner nodes graded between them.
+// Every edge of the live faces discretised once: node spacings no larger than h, than the
+// node's shortest edge, nor than the spacing the input asks of the node; inner nodes graded
+// between them.
 void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
   g.nodes = model.nodes;
   g.face_of.assign(g.nodes.size(), -1);
   g.spacing.assign(model.nodes.size(), h);
+  for (std::size_t v = 0; v < model.node_spacing.size() && v < g.spacing.size(); ++v)
+    if (model.node_spacing[v] > 0) g.spacing[v] = std::min(h, model.node_spacing[v]);
   g.edge_nodes.clear();
   for (const ModelFace& f : model.faces) {
     if (!f.alive) continue;
@@ -33,13 +36,17 @@ void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
         g.edge_nodes.emplace(edge_key(a, b), std::vector<Index>{});
       }
   }
+  auto hint = [&](Index v) { return std::size_t(v) < model.node_spacing.size() ? model.node_spacing[v] : 0.0; };
   for (auto& [e, inner] : g.edge_nodes) {
     const Vec3 p = model.nodes[e.first], q = model.nodes[e.second];
     const double sa = g.spacing[e.first], sb = g.spacing[e.second];
     const double len = (q - p).norm();
-    for (double f : graded_edge_fractions(len, sa, sb, h)) {
+    // an edge whose both ends ask for a spacing keeps it all along (a curved face's ruling
+    // strip stays as fine as its chords); other edges grow towards h in their middle
+    const double cap = hint(e.first) > 0 && hint(e.second) > 0 ? std::min(h, std::max({hint(e.first), hint(e.second), sa, sb})) : h;
+    for (double f : graded_edge_fractions(len, sa, sb, cap)) {
       g.nodes.push_back(p + (q - p) * f);
-      g.spacing.push_back(edge_spacing_at(f * len, len, sa, sb, h));
+      g.spacing.push_back(edge_spacing_at(f * len, len, sa, sb, cap));
       g.face_of.push_back(-1);
       inner.push_back(static_cast<Index>(g.nodes.size() - 1));
     }

@@ -87,6 +87,45 @@ TEST(FaceGrids, CubeAtRequestedCount) {
   }
 }
 
+// A node's spacing hint (PolyInput::node_spacing): an edge between two hinted nodes keeps the
+// hint all along, an edge with one hinted end grades from it towards h, the rest stay at h.
+TEST(FaceGrids, NodeSpacingHintsRefineTheirEdges) {
+  PolyInput in = test::poly(test::unit_cube());
+  const std::size_t n = in.nodes.size();
+  in.node_spacing.assign(n, 0.0);
+  in.node_spacing[0] = in.node_spacing[1] = 0.05;  // the ends of one edge of the cube
+  const PolyhedralModel m = prepare_model(in);
+  FaceGridOptions opt;
+  opt.size = 0.25;
+  const FaceGrids g = mesh_faces(m, opt);
+  expect_faces_covered(g, m);
+  expect_regions_closed(g, m);
+  const double len01 = (m.nodes[0] - m.nodes[1]).norm();
+  std::size_t both = 0, one = 0, none = 0;
+  for (const auto& [e, inner] : g.edge_nodes) {
+    const bool a = e.first < 2, b = e.second < 2;
+    const double len = (m.nodes[e.first] - m.nodes[e.second]).norm();
+    if (a && b) {
+      EXPECT_NEAR(static_cast<double>(inner.size() + 1), len01 / 0.05, 1.0);
+      ++both;
+    } else if (a || b) {
+      // finer than h near the hinted end, so more pieces than h alone gives, far fewer than the hint's
+      EXPECT_GT(inner.size() + 1, std::size_t(std::lround(len / 0.25)));
+      EXPECT_LT(static_cast<double>(inner.size() + 1), len / 0.05);
+      ++one;
+    } else {
+      EXPECT_NEAR(static_cast<double>(inner.size() + 1), len / 0.25, 1.0);
+      ++none;
+    }
+  }
+  EXPECT_EQ(both, 1u);
+  EXPECT_GT(one, 0u);
+  EXPECT_GT(none, 0u);
+  // one spacing per node, or none
+  in.node_spacing.pop_back();
+  EXPECT_THROW(prepare_model(in), InputError);
+}
+
 TEST(FaceGrids, FaceWithHoleAndShortEdgesGrade) {
   // the re-entrant box (thesis 6.13, example 2): its top face has the pocket's mouth as a hole
   const PolyhedralModel m = prepare_model(read_poly(std::string(BISECT_TEST_DATA) + "/reentry-box.poly"));

@@ -1,0 +1,349 @@
+"""The BisectMesh FEM mesh document object: a ``Fem::FemMeshObjectPython`` that meshes the solids
+of a Part object with :func:`bisectmesh.shape_mesher.mesh_shape` whenever it is recomputed.
+
+    obj = bisectmesh.make_mesh_object(doc, part_obj, elements=5000)   # or size=2.5
+    doc.recompute()                                                   # meshes; obj.FemMesh is set
+
+The parameters are properties (group "BisectMesh"), the results read-only properties (group
+"Results"). FreeCAD stores the FemMesh in the document itself; the proxies below keep no state
+of their own, so that a saved document reopens with ``bisectmesh.mesh_object`` importable and
+nothing else. The view provider only adds an icon and the edit panel: the mesh is drawn by
+FEM's own C++ view provider of ``Fem::FemMeshObjectPython``.
+
+FreeCAD is imported inside the functions: ``import bisectmesh`` stays possible without it.
+"""
+
+import json
+import time
+
+TYPE = "Fem::BisectMesh"
+ORDERS = ["1st", "2nd"]
+DEFAULT_ELEMENTS = 5000
+
+_PARAMETERS = "BisectMesh"
+_RESULTS = "Results"
+# Results are outputs: setting them must not mark the object for another recompute.
+_PROP_OUTPUT = 8
+
+# (type, name, tooltip) of the parameters; the defaults are set by make_mesh_object.
+_PARAMETER_PROPERTIES = (
+    ("App::PropertyLink", "Part",
+     "The Part object whose solids are meshed (it needs a Shape with at least one solid)"),
+    ("App::PropertyEnumeration", "ElementOrder",
+     "1st: linear tetrahedra (tetra4); 2nd: quadratic tetrahedra (tetra10), their boundary "
+     "mid-edge nodes on the true surfaces"),
+    ("App::PropertyInteger", "TargetElements",
+     "The number of tetrahedra asked for (the thesis's R); 0: use ElementSize instead"),
+    ("App::PropertyLength", "ElementSize",
+     "The element size (nodal spacing), used when TargetElements is 0"),
+    ("App::PropertyBool", "UseResolutionHints",
+     "Take the Part's view resolution (Deviation, AngularDeflection) for the fineness of the "
+     "curved surfaces and grade the volume mesh from it; off: FreeCAD's default resolution and "
+     "a uniform spacing"),
+    ("App::PropertyInteger", "OptimizePasses",
+     "Passes of global optimisation by local transformations (0: none)"),
+    ("App::PropertyInteger", "SmoothPasses",
+     "Passes of guarded nodal smoothing (0: none)"),
+)
+
+_RESULT_PROPERTIES = (
+    ("App::PropertyInteger", "NodeCount", "Nodes of the last mesh"),
+    ("App::PropertyInteger", "ElementCount", "Tetrahedra of the last mesh"),
+    ("App::PropertyFloat", "MinDihedralAngle", "Smallest dihedral angle of the last mesh, in degrees"),
+    ("App::PropertyFloat", "MeshingTime", "Seconds the last meshing took, from the shape to the FemMesh"),
+    ("App::PropertyString", "Summary", "The last meshing in a few lines: counts, stage times, quality"),
+    ("App::PropertyString", "ResultData", "The last meshing's counts, times and quality as JSON "
+     "(what the panel shows)"),
+)
+
+
+class MeshObject:
+    """Proxy of a BisectMesh FEM mesh object: re-meshes ``Part`` on recompute."""
+
+    Type = TYPE
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.init_properties(obj)
+
+    @staticmethod
+    def init_properties(obj):
+        """Adds the properties the object lacks; also run on restore, so that documents saved by
+        an older version gain the new ones."""
+        present = set(obj.PropertiesList)
+        for kind, name, tooltip in _PARAMETER_PROPERTIES:
+            if name not in present:
+                obj.addProperty(kind, name, _PARAMETERS, tooltip)
+                if name == "ElementOrder":
+                    obj.ElementOrder = ORDERS
+                    obj.ElementOrder = "2nd"
+        for kind, name, tooltip in _RESULT_PROPERTIES:
+            if name not in present:
+                obj.addProperty(kind, name, _RESULTS, tooltip, _PROP_OUTPUT)
+            # read-only; ResultData hidden too: JSON for the panel, not for people
+            obj.setEditorMode(name, 2 if name == "ResultData" else 1)
+
+    def onDocumentRestored(self, obj):
+        self.init_properties(obj)
+
+    def execute(self, obj):
+        arguments = mesh_arguments(obj)
+        part = obj.Part
+        shape = part_shape(part)
+        # FreeCAD shows the message as the object's recompute error: say which Part it is about
+        try:
+            femmesh, result = mesh_part(part, shape=shape, **arguments)
+        except ValueError as err:
+            raise ValueError("%s: %s" % (part.Label, err)) from err
+        except RuntimeError as err:
+            raise RuntimeError("%s: %s" % (part.Label, err)) from err
+        obj.FemMesh = femmesh
+        set_results(obj, result)
+
+    def adopt(self, obj, femmesh, result):
+        """Takes a mesh computed elsewhere from the object's current parameters (the task panel
+        meshes in a worker thread) instead of meshing again on the next recompute."""
+        obj.FemMesh = femmesh
+        set_results(obj, result)
+        obj.purgeTouched()
+
+    # FreeCAD pickles the proxy into the document: there is nothing to keep.
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def mesh_arguments(obj):
+    """The keyword arguments of :func:`mesh_part` that ``obj``'s properties ask for; ValueError
+    for values that make no sense."""
+    name = obj.Label
+    if obj.TargetElements < 0:
+        raise ValueError("%s: TargetElements must be 0 (use ElementSize) or more" % name)
+    if obj.OptimizePasses < 0 or obj.SmoothPasses < 0:
+        raise ValueError("%s: OptimizePasses and SmoothPasses cannot be negative" % name)
+    size = float(obj.ElementSize.Value)
+    if obj.TargetElements == 0 and size <= 0:
+        raise ValueError("%s: set TargetElements, or ElementSize (with TargetElements 0)" % name)
+    return {
+        "elements": obj.TargetElements if obj.TargetElements > 0 else None,
+        "size": None if obj.TargetElements > 0 else size,
+        "order": 1 if obj.ElementOrder == "1st" else 2,
+        "use_hints": bool(obj.UseResolutionHints),
+        "optimize": int(obj.OptimizePasses),
+        "smooth": int(obj.SmoothPasses),
+    }
+
+
+def part_shape(part):
+    """The shape to mesh of ``part``, or ValueError saying why there is none."""
+    if part is None:
+        raise ValueError("no Part object to mesh: set the Part property")
+    shape = getattr(part, "Shape", None)
+    if shape is None or shape.isNull():
+        raise ValueError("%s (%s) has no shape to mesh" % (part.Label, part.Name))
+    if not shape.Solids:
+        raise ValueError("%s (%s) has no solid to mesh (its shape is a %s)"
+                         % (part.Label, part.Name, shape.ShapeType))
+    return shape
+
+
+def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=3, smooth=3,
+              progress=None, shape=None, resolution=None):
+    """Meshes the solids of ``part`` (a document object with a Shape) the way a BisectMesh object
+    does; returns (Fem.FemMesh, result) with result a JSON-friendly dict of counts, stage times
+    and the generator's quality summary.
+
+    shape, resolution  already read from ``part`` (the task panel reads them in the GUI thread and
+                       meshes in another); by default read here.
+    """
+    from . import shape_mesher
+
+    if shape is None:
+        shape = part_shape(part)
+    if use_hints and resolution is None:
+        resolution = shape_mesher.view_resolution(part)
+    if not use_hints:
+        resolution = None
+    report = {}
+    start = time.perf_counter()
+    femmesh = shape_mesher.mesh_shape(shape, elements=elements, size=size, order=order,
+                                      resolution=resolution, hints=use_hints, optimize=optimize,
+                                      smooth=smooth, progress=progress, report=report)
+    seconds = time.perf_counter() - start
+    return femmesh, result_of(femmesh, report, seconds, order)
+
+
+def result_of(femmesh, report, seconds, order):
+    """What the object keeps of a meshing (see mesh_part)."""
+    stats = report.get("stats") or {}
+    quality = {k: v for k, v in (stats.get("quality") or {}).items() if k != "measures"}
+    result = {
+        "nodes": int(femmesh.NodeCount),
+        "tets": int(femmesh.VolumeCount),
+        "order": int(order),
+        "seconds": float(seconds),
+        "times": dict(stats.get("times") or {}),
+        "quality": quality,
+    }
+    for key in ("regions", "convex_cells"):
+        if key in stats:
+            result[key] = stats[key]
+    for key in ("deflection", "angular_deflection", "input_faces", "projected"):
+        if key in report:
+            result[key] = report[key]
+    return json.loads(json.dumps(result, default=float))  # plain types only
+
+
+_STAGES = (("init_geom", "init geom"), ("bisect", "bisect"), ("gen_nodes", "gen. nodes"),
+           ("gen_tets", "gen. tets"), ("optimize", "optimize"), ("total", "total"))
+
+
+def summary(result):
+    """A few lines of text for a result of :func:`mesh_part`."""
+    lines = ["%d tetrahedra (order %d), %d nodes, in %.2f s" % (
+        result["tets"], result["order"], result["nodes"], result["seconds"])]
+    times = result.get("times") or {}
+    if times:
+        lines.append("stages (s): " + ", ".join(
+            "%s %.3f" % (label, times[key]) for key, label in _STAGES if key in times))
+    q = result.get("quality") or {}
+    if "dihedral_min" in q:
+        lines.append("dihedral angles %.2f .. %.2f deg, %.2f%% of elements below 10 deg" % (
+            q["dihedral_min"], q.get("dihedral_max", float("nan")), q.get("pct_dihedral_below_10", 0.0)))
+    if "gamma_mean" in q:
+        lines.append("gamma min %.4f mean %.4f, alpha mean %.4f" % (
+            q.get("gamma_min", float("nan")), q["gamma_mean"], q.get("alpha_mean", float("nan"))))
+    return "\n".join(lines)
+
+
+def set_results(obj, result):
+    obj.NodeCount = result["nodes"]
+    obj.ElementCount = result["tets"]
+    obj.MinDihedralAngle = float((result.get("quality") or {}).get("dihedral_min", 0.0))
+    obj.MeshingTime = result["seconds"]
+    obj.Summary = summary(result)
+    obj.ResultData = json.dumps(result)
+
+
+def stored_result(obj):
+    """The result of the object's last meshing (a dict as mesh_part returns), or None."""
+    try:
+        return json.loads(obj.ResultData) if obj.ResultData else None
+    except (AttributeError, ValueError):
+        return None
+
+
+def is_mesh_object(obj):
+    """True for a BisectMesh FEM mesh object."""
+    return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
+
+
+class ViewProviderMeshObject:
+    """View provider proxy: our icon, and the mesh panel on double-click or Edit. The mesh itself
+    is drawn by FEM's ViewProviderFemMeshPython, which this proxy extends."""
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        from .gui import icon_path
+
+        return icon_path("BisectMesh_Mesh.svg")
+
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None  # other edit modes (Transform, ...) stay FreeCAD's
+        import FreeCADGui
+        from .gui import mesh_panel
+
+        obj = vobj.Object
+        if obj.Part is None:
+            import FreeCAD
+
+            FreeCAD.Console.PrintError("BisectMesh: %s has no Part to mesh; set its Part property\n" % obj.Label)
+            return False
+        FreeCADGui.Control.showDialog(mesh_panel.MeshPanel(obj.Part, mesh_obj=obj))
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def doubleClicked(self, vobj):
+        import FreeCADGui
+
+        gui_doc = FreeCADGui.getDocument(vobj.Object.Document.Name)
+        if gui_doc.getInEdit() or FreeCADGui.Control.activeDialog():
+            import FreeCAD
+
+            FreeCAD.Console.PrintWarning("BisectMesh: close the open task dialog first\n")
+            return True
+        gui_doc.setEdit(vobj.Object.Name, 0)
+        return True
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+
+def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints=True, optimize=3,
+                     smooth=3, name="BisectMesh", analysis=None):
+    """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc`` (not yet meshed: that is
+    the next recompute's job).
+
+    elements | size   the target tetrahedron count, or the element size in mm (at most one;
+                      neither: 5000 elements)
+    order             1 (tetra4) or 2 (tetra10)
+    use_hints         grade the mesh from the Part's view resolution (UseResolutionHints)
+    optimize, smooth  optimisation and smoothing passes
+    analysis          the FEM analysis to add it to; by default the active one in the GUI
+
+    Returns the ``Fem::FemMeshObjectPython``.
+    """
+    import FreeCAD
+
+    if elements is not None and size is not None:
+        raise ValueError("give elements or size, not both")
+    if elements is None and size is None:
+        elements = DEFAULT_ELEMENTS
+    if order not in (1, 2):
+        raise ValueError("order must be 1 or 2, not %r" % (order,))
+    obj = doc.addObject("Fem::FemMeshObjectPython", name)
+    MeshObject(obj)
+    obj.Part = part_obj
+    obj.ElementOrder = ORDERS[order - 1]
+    obj.TargetElements = int(elements) if elements is not None else 0
+    if size is not None:
+        obj.ElementSize = float(size)
+    obj.UseResolutionHints = bool(use_hints)
+    obj.OptimizePasses = int(optimize)
+    obj.SmoothPasses = int(smooth)
+    if FreeCAD.GuiUp:
+        ViewProviderMeshObject(obj.ViewObject)
+        if analysis is None:
+            analysis = _active_analysis(doc)
+    if analysis is not None:
+        analysis.addObject(obj)
+    return obj
+
+
+def _active_analysis(doc):
+    try:
+        import FemGui
+    except ImportError:
+        return None
+    analysis = FemGui.getActiveAnalysis()
+    if analysis is not None and analysis.Document is doc:
+        return analysis
+    return None

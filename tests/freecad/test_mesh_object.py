@@ -1,0 +1,219 @@
+"""The BisectMesh FEM mesh object (bisectmesh.make_mesh_object), headless, as a macro user drives
+it: a recompute meshes the Part, changing TargetElements changes the mesh, bad input is a
+recompute error naming what is wrong, the object joins an analysis, and it survives saving and
+reopening the document (properties, FemMesh, a recompute afterwards)."""
+
+import os
+import shutil
+import tempfile
+import unittest
+
+import FreeCAD
+import Part
+
+import bisectmesh
+from bisectmesh import mesh_object
+
+import fc_helpers
+
+
+def group_names(femmesh):
+    return {femmesh.getGroupName(g) for g in femmesh.Groups}
+
+
+class MeshObjectTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("MeshObjectTest")
+        self.part = fc_helpers.box_minus_cylinder(self.doc)
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def assert_valid_mesh(self, obj, order):
+        self.assertTrue(obj.isValid(), obj.getStatusString())
+        femmesh = obj.FemMesh
+        self.assertGreater(femmesh.VolumeCount, 100)
+        report = bisectmesh.quality(femmesh)
+        self.assertTrue(report["valid"], report["violations"][:5])
+        self.assertEqual(report["order"], order)
+        first = sorted(femmesh.Volumes)[0]
+        self.assertEqual(len(femmesh.getElementNodes(first)), 10 if order == 2 else 4)
+        self.assertEqual(obj.ElementCount, femmesh.VolumeCount)
+        self.assertEqual(obj.NodeCount, femmesh.NodeCount)
+        return report
+
+    def test_recompute_gives_a_valid_tetra10_mesh(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=3000)
+        self.assertEqual(obj.TypeId, "Fem::FemMeshObjectPython")
+        self.assertTrue(mesh_object.is_mesh_object(obj))
+        self.assertEqual(obj.FemMesh.VolumeCount, 0)  # meshing is the recompute's job
+        self.doc.recompute()
+        report = self.assert_valid_mesh(obj, order=2)
+        # the mesh fills the solid: tetra10 mid-nodes lie on the cylinder, the corners' facets cut it
+        volume = fc_helpers.reference_measures(fc_helpers.fc_elements(obj.FemMesh)[1])["volume"].sum()
+        self.assertAlmostEqual(abs(volume), self.part.Shape.Volume, delta=0.01 * self.part.Shape.Volume)
+        names = group_names(obj.FemMesh)
+        self.assertIn("Solid1", names)
+        for k in range(len(self.part.Shape.Faces)):
+            self.assertIn("Face%d_Nodes" % (k + 1), names)
+        self.assertAlmostEqual(obj.MinDihedralAngle, report["dihedral_min"], places=6)
+        self.assertGreater(obj.MeshingTime, 0.0)
+        self.assertIn("tetrahedra (order 2)", obj.Summary)
+        self.assertIn("total", obj.Summary)
+        stored = mesh_object.stored_result(obj)
+        self.assertEqual(stored["tets"], obj.FemMesh.VolumeCount)
+        self.assertIn("gen_tets", stored["times"])
+        # results are outputs: setting them does not ask for another meshing
+        self.assertEqual(obj.State, ["Up-to-date"])
+
+    def test_target_elements_changes_the_count(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2000, order=1)
+        self.doc.recompute()
+        self.assert_valid_mesh(obj, order=1)
+        coarse = obj.FemMesh.VolumeCount
+        obj.TargetElements = 12000
+        self.assertIn("Touched", obj.State)
+        self.doc.recompute()
+        self.assert_valid_mesh(obj, order=1)
+        fine = obj.FemMesh.VolumeCount
+        self.assertGreater(fine, 2.5 * coarse, (coarse, fine))
+        self.assertGreater(fine, 0.7 * 12000)
+
+    def test_element_size_and_options(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, size=1.5, use_hints=False, optimize=1,
+                                          smooth=0, name="BySize")
+        self.assertEqual(obj.TargetElements, 0)
+        self.assertAlmostEqual(obj.ElementSize.Value, 1.5)
+        self.assertFalse(obj.UseResolutionHints)
+        self.assertEqual((obj.OptimizePasses, obj.SmoothPasses), (1, 0))
+        self.doc.recompute()
+        self.assert_valid_mesh(obj, order=2)
+        # the spacing is about the element size: about V / (0.1179 s^3) tetrahedra, within a factor 3
+        expected = self.part.Shape.Volume / (0.1179 * 1.5 ** 3)
+        self.assertGreater(obj.ElementCount, expected / 3)
+        self.assertLess(obj.ElementCount, expected * 3)
+
+    def test_bad_input_is_a_recompute_error(self):
+        face = self.doc.addObject("Part::Feature", "JustAFace")
+        face.Shape = Part.makeBox(5, 5, 5).Faces[0]
+        obj = bisectmesh.make_mesh_object(self.doc, face, elements=1000)
+        self.doc.recompute()
+        self.assertFalse(obj.isValid())
+        self.assertIn("JustAFace", obj.getStatusString())
+        self.assertIn("no solid", obj.getStatusString())
+        self.assertEqual(obj.FemMesh.VolumeCount, 0)
+
+        # an open shell made into a "solid": the mesher names the solid
+        open_box = self.doc.addObject("Part::Feature", "OpenBox")
+        open_box.Shape = Part.Solid(Part.Shell(Part.makeBox(5, 5, 5).Faces[:5]))
+        obj.Part = open_box
+        self.doc.recompute()
+        self.assertFalse(obj.isValid())
+        message = obj.getStatusString()
+        self.assertIn("OpenBox", message)
+        self.assertRegex(message, r"Solid\d|Face\d")
+
+        obj.Part = None
+        self.doc.recompute()
+        self.assertIn("Part", obj.getStatusString())
+
+        # and back to a good part: the object recovers
+        obj.Part = self.part
+        obj.TargetElements = 0
+        obj.ElementSize = 0.0
+        self.doc.recompute()
+        self.assertIn("ElementSize", obj.getStatusString())
+        obj.TargetElements = 1500
+        self.doc.recompute()
+        self.assert_valid_mesh(obj, order=2)
+
+        with self.assertRaises(ValueError):
+            bisectmesh.make_mesh_object(self.doc, self.part, elements=100, size=1.0)
+        with self.assertRaises(ValueError):
+            bisectmesh.make_mesh_object(self.doc, self.part, order=3)
+
+    def test_added_to_the_analysis(self):
+        import ObjectsFem
+
+        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=1500, analysis=analysis)
+        self.assertIn(obj, analysis.Group)
+        alone = bisectmesh.make_mesh_object(self.doc, self.part, elements=1500, name="Alone")
+        self.assertNotIn(alone, analysis.Group)  # no GUI, no active analysis: not added
+
+    def test_adopted_mesh_is_not_computed_again(self):
+        # what the task panel does: mesh in a worker, then hand the mesh to the object
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2500, order=1)
+        femmesh, result = mesh_object.mesh_part(self.part, **mesh_object.mesh_arguments(obj))
+        femmesh.addNode(1000.0, 0.0, 0.0, femmesh.NodeCount + 1000)  # a mark a new meshing would lose
+        obj.Proxy.adopt(obj, femmesh, result)
+        self.assertEqual(obj.State, ["Up-to-date"])
+        self.doc.recompute()
+        self.assertEqual(obj.FemMesh.NodeCount, femmesh.NodeCount)
+        self.assertEqual(obj.FemMesh.BoundBox.XMax, 1000.0)
+        self.assertEqual(obj.ElementCount, femmesh.VolumeCount)
+        # and a change of the Part re-meshes as usual
+        self.part.Shape = self.part.Shape.copy()
+        self.doc.recompute()
+        self.assertTrue(obj.isValid(), obj.getStatusString())
+        self.assertAlmostEqual(obj.FemMesh.BoundBox.XMax, 20.0, places=6)
+
+    def test_save_and_reopen(self):
+        import ObjectsFem
+
+        analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2500, order=2, use_hints=False,
+                                          optimize=2, smooth=1, analysis=analysis)
+        self.doc.recompute()
+        self.assert_valid_mesh(obj, order=2)
+        counts = (obj.FemMesh.NodeCount, obj.FemMesh.VolumeCount, obj.FemMesh.FaceCount)
+        groups = group_names(obj.FemMesh)
+        summary, name, part_name, analysis_name = obj.Summary, obj.Name, self.part.Name, analysis.Name
+        folder = tempfile.mkdtemp(prefix="bisectmesh-")
+        try:
+            path = os.path.join(folder, "mesh_object.FCStd")
+            self.doc.saveAs(path)
+            FreeCAD.closeDocument(self.doc.Name)
+            self.doc = FreeCAD.openDocument(path)
+            obj = self.doc.getObject(name)
+            self.assertIsNotNone(obj)
+            self.assertEqual(obj.TypeId, "Fem::FemMeshObjectPython")
+            self.assertTrue(mesh_object.is_mesh_object(obj), getattr(obj, "Proxy", None))
+            self.assertEqual(obj.Part, self.doc.getObject(part_name))
+            self.assertEqual(obj.ElementOrder, "2nd")
+            self.assertEqual((obj.TargetElements, obj.UseResolutionHints, obj.OptimizePasses, obj.SmoothPasses),
+                             (2500, False, 2, 1))
+            self.assertEqual(obj.Summary, summary)
+            self.assertEqual((obj.FemMesh.NodeCount, obj.FemMesh.VolumeCount, obj.FemMesh.FaceCount), counts)
+            self.assertEqual(group_names(obj.FemMesh), groups)
+            self.assertIn(obj, self.doc.getObject(analysis_name).Group)
+            self.assertNotIn("Touched", obj.State)
+            # a recompute after the reload meshes again
+            obj.TargetElements = 6000
+            self.doc.recompute()
+            self.assert_valid_mesh(obj, order=2)
+            self.assertGreater(obj.FemMesh.VolumeCount, 1.5 * counts[1])
+        finally:
+            shutil.rmtree(folder, ignore_errors=True)
+
+    def test_command_and_panel_modules(self):
+        from xml.etree import ElementTree
+
+        try:
+            import PySide.QtGui  # noqa: F401  (FreeCAD's Qt shim)
+        except ImportError as err:
+            self.skipTest("no PySide in this FreeCAD: %s" % err)
+        from bisectmesh.gui import command_mesh, mesh_panel
+
+        self.assertEqual(command_mesh.COMMAND_NAME, "BisectMesh_Mesh")
+        resources = command_mesh.MeshCommand().GetResources()
+        self.assertEqual(resources["MenuText"], "Mesh with BisectMesh")
+        self.assertTrue(os.path.isfile(resources["Pixmap"]), resources["Pixmap"])
+        root = ElementTree.parse(resources["Pixmap"]).getroot()
+        self.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg")
+        self.assertEqual(root.get("viewBox"), "0 0 64 64")
+        self.assertTrue(hasattr(mesh_panel.MeshPanel, "getStandardButtons"))
+
+
+if __name__ == "__main__":
+    unittest.main()
