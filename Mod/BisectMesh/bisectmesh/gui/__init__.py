@@ -21,3 +21,44 @@ def icon_path(name):
         if os.path.isfile(candidate):
             return candidate
     return ""
+
+
+class SelectionCommand:
+    """A toolbar command that acts on the selection and, while greyed out, says in its tooltip
+    what the user should select first. Subclasses set COMMAND_NAME, ICON, MENU_TEXT, TOOLTIP
+    and NEEDS (the hint in the tooltip), and define why_inactive() ('' when it can run)."""
+
+    COMMAND_NAME = ICON = MENU_TEXT = TOOLTIP = NEEDS = ""
+
+    def __init__(self):
+        self._shown_tooltip = None
+
+    def why_inactive(self):
+        raise NotImplementedError("a SelectionCommand defines why_inactive")
+
+    def GetResources(self):
+        return {"Pixmap": icon_path(self.ICON), "MenuText": self.MENU_TEXT,
+                "ToolTip": self.TOOLTIP + ".\n" + self.NEEDS}
+
+    def IsActive(self):
+        reason = self.why_inactive()
+        self._show_tooltip(self.TOOLTIP + "." if not reason else reason + ".\n\n" + self.TOOLTIP + ".")
+        return not reason
+
+    def _show_tooltip(self, text):
+        # FreeCAD's commands carry a fixed tooltip; updating the QAction makes the greyed-out
+        # button tell the user what is missing. IsActive runs often, so only on a change.
+        if text == self._shown_tooltip:
+            return
+        try:
+            import FreeCADGui
+
+            command = FreeCADGui.Command.get(self.COMMAND_NAME)
+            actions = command.getAction() if command else []
+        except Exception:
+            return
+        for action in actions:
+            action.setToolTip(text)
+            action.setStatusTip(text.split("\n")[0])
+        if actions:
+            self._shown_tooltip = text

@@ -2,6 +2,8 @@
 
 import FreeCAD
 
+from . import SelectionCommand
+
 COMMAND_NAME = "BisectMesh_Mesh"
 _TOOLTIP = ("Mesh with BisectMesh: a tetrahedral FEM mesh (tetra4 or tetra10) of the selected "
             "solid, by recursive domain bisection; the mesh object joins the active analysis")
@@ -38,25 +40,17 @@ def why_inactive():
     return ""
 
 
-class MeshCommand:
+class MeshCommand(SelectionCommand):
     """Mesh the selected solid with BisectMesh."""
 
-    def __init__(self):
-        self._shown_tooltip = None
+    COMMAND_NAME = COMMAND_NAME
+    ICON = "BisectMesh_Mesh.svg"
+    MENU_TEXT = "Mesh with BisectMesh"
+    TOOLTIP = _TOOLTIP
+    NEEDS = "Select a Part object with a solid first."
 
-    def GetResources(self):
-        from . import icon_path
-
-        return {
-            "Pixmap": icon_path("BisectMesh_Mesh.svg"),
-            "MenuText": "Mesh with BisectMesh",
-            "ToolTip": _TOOLTIP + ".\nSelect a Part object with a solid first.",
-        }
-
-    def IsActive(self):
-        reason = why_inactive()
-        self._show_tooltip(_TOOLTIP + "." if not reason else reason + ".\n\n" + _TOOLTIP + ".")
-        return not reason
+    def why_inactive(self):
+        return why_inactive()
 
     def Activated(self):
         import FreeCADGui
@@ -66,23 +60,6 @@ class MeshCommand:
         if part is None or FreeCADGui.Control.activeDialog():
             return
         FreeCADGui.Control.showDialog(mesh_panel.MeshPanel(part))
-
-    def _show_tooltip(self, text):
-        # As the quality command does: the greyed-out button says what is missing.
-        if text == self._shown_tooltip:
-            return
-        try:
-            import FreeCADGui
-
-            command = FreeCADGui.Command.get(COMMAND_NAME)
-            actions = command.getAction() if command else []
-        except Exception:
-            return
-        for action in actions:
-            action.setToolTip(text)
-            action.setStatusTip(text.split("\n")[0])
-        if actions:
-            self._shown_tooltip = text
 
 
 def register():

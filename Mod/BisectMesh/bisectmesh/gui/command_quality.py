@@ -2,6 +2,8 @@
 
 import FreeCAD
 
+from . import SelectionCommand
+
 COMMAND_NAME = "BisectMesh_Quality"
 _TOOLTIP = ("Mesh quality: checks the tetrahedra of the selected FEM mesh (orientation, "
             "conformity, closed boundary) and shows their dihedral angles, solid angles, "
@@ -44,25 +46,17 @@ def _our_panel_is_open():
     return quality_panel.QualityPanel.open_panel is not None
 
 
-class QualityCommand:
+class QualityCommand(SelectionCommand):
     """Mesh quality of the selected FEM mesh object."""
 
-    def __init__(self):
-        self._shown_tooltip = None
+    COMMAND_NAME = COMMAND_NAME
+    ICON = "BisectMesh_Quality.svg"
+    MENU_TEXT = "Mesh quality"
+    TOOLTIP = _TOOLTIP
+    NEEDS = "Select a FEM mesh object first."
 
-    def GetResources(self):
-        from . import icon_path
-
-        return {
-            "Pixmap": icon_path("BisectMesh_Quality.svg"),
-            "MenuText": "Mesh quality",
-            "ToolTip": _TOOLTIP + ".\nSelect a FEM mesh object first.",
-        }
-
-    def IsActive(self):
-        reason = why_inactive()
-        self._show_tooltip(_TOOLTIP + "." if not reason else reason + ".\n\n" + _TOOLTIP + ".")
-        return not reason
+    def why_inactive(self):
+        return why_inactive()
 
     def Activated(self):
         import FreeCADGui
@@ -76,24 +70,6 @@ class QualityCommand:
         panel = quality_panel.QualityPanel(obj)
         FreeCADGui.Control.showDialog(panel)
         panel.compute()
-
-    def _show_tooltip(self, text):
-        # FreeCAD's commands carry a fixed tooltip; updating the QAction makes the greyed-out
-        # button tell the user what is missing. IsActive runs often, so only on a change.
-        if text == self._shown_tooltip:
-            return
-        try:
-            import FreeCADGui
-
-            command = FreeCADGui.Command.get(COMMAND_NAME)
-            actions = command.getAction() if command else []
-        except Exception:
-            return
-        for action in actions:
-            action.setToolTip(text)
-            action.setStatusTip(text.split("\n")[0])
-        if actions:
-            self._shown_tooltip = text
 
 
 def register():
