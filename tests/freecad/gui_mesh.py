@@ -22,38 +22,16 @@ mesh_error_panel.png.
 import os
 import sys
 import time
-import traceback
 
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-BUILD_MOD = os.environ.get("BISECTMESH_BUILD_MOD", "/work/build-lead/Mod/BisectMesh")
-ARTIFACTS = os.environ.get("BISECTMESH_ARTIFACTS", "/work/build-lead/test-artifacts")
 HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/gui_mesh.py")))
-os.makedirs(ARTIFACTS, exist_ok=True)
-_log = open(os.path.join(ARTIFACTS, "gui_mesh.log"), "w")
-_START = time.time()
+sys.path.insert(0, HERE)
+from gui_harness import ARTIFACTS, check, command_state, log, settle, start, widen_combo_view  # noqa: E402
 
-
-def log(text):
-    _log.write(text + "\n")
-    _log.flush()
-    sys.stdout.write(text + "\n")
-    sys.stdout.flush()
-
-
-def check(condition, what):
-    log(("ok    " if condition else "FAIL  ") + "%6.1fs  " % (time.time() - _START) + what)
-    if not condition:
-        raise AssertionError(what)
-
-
-def settle(ms=300):
-    loop = QtCore.QEventLoop()
-    QtCore.QTimer.singleShot(ms, loop.quit)
-    loop.exec_()
-    FreeCADGui.updateGui()
+COMMAND = "BisectMesh_Mesh"
 
 
 def wait_for(condition, timeout, what):
@@ -70,32 +48,6 @@ def wait_for(condition, timeout, what):
     return time.time() - start, longest
 
 
-def register_staged_workbench():
-    sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != os.path.abspath(BUILD_MOD)]
-    sys.path.insert(0, BUILD_MOD)
-    sys.path.insert(1, HERE)
-    for name in [n for n in sys.modules if n == "bisectmesh" or n.startswith("bisectmesh.")]:
-        del sys.modules[name]
-    # An installed copy of the workbench (the user's Mod folder) may have registered an older
-    # InitGui.py: the staged one replaces it, so that its toolbar and menu are the ones tested.
-    if "BisectMeshWorkbench" in FreeCADGui.listWorkbenches():
-        FreeCADGui.removeWorkbench("BisectMeshWorkbench")
-    path = os.path.join(BUILD_MOD, "InitGui.py")
-    with open(path) as source:
-        exec(compile(source.read(), path, "exec"), {"__name__": "BisectMeshInitGui"})
-    FreeCADGui.activateWorkbench("BisectMeshWorkbench")
-    import bisectmesh
-
-    check(os.path.abspath(bisectmesh.__file__).startswith(os.path.abspath(BUILD_MOD)),
-          "bisectmesh imported from %s" % os.path.dirname(bisectmesh.__file__))
-
-
-def command_state():
-    command = FreeCADGui.Command.get("BisectMesh_Mesh")
-    actions = command.getAction()
-    return command.isActive(), actions[0].toolTip() if actions else ""
-
-
 def select(obj):
     FreeCADGui.Selection.clearSelection()
     if obj is not None:
@@ -110,13 +62,6 @@ def dialog_button(which):
         if button is not None and button.isVisible():
             return button
     return None
-
-
-def widen_combo_view(width):
-    window = FreeCADGui.getMainWindow()
-    for dock in window.findChildren(QtGui.QDockWidget):
-        if dock.objectName() in ("Combo View", "Tasks") and dock.isVisible():
-            window.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
 
 
 def show_all():
@@ -183,20 +128,20 @@ def run():
     show_all()
 
     select(None)
-    active, tooltip = command_state()
+    active, tooltip = command_state(COMMAND)
     check(not active, "command inactive without a selection")
     check("Select one Part object" in tooltip, "tooltip says why: %r" % tooltip.split("\n")[0])
     select(face)
-    active, tooltip = command_state()
+    active, tooltip = command_state(COMMAND)
     check(not active and "no solid" in tooltip, "inactive on a face: %r" % tooltip.split("\n")[0])
     select(part)
-    check(command_state()[0], "command active with the solid selected")
+    check(command_state(COMMAND)[0], "command active with the solid selected")
 
     # -- Mesh, look at the result, OK ---------------------------------------------------------
     widen_combo_view(480)
     objects_before = len(doc.Objects)
     panel = open_panel(part)
-    check(not command_state()[0], "command inactive while its panel is open")
+    check(not command_state(COMMAND)[0], "command inactive while its panel is open")
     check(panel.results_box.isHidden(), "no result before meshing")
     panel.elements.setValue(4000)
     panel.order.setCurrentIndex(1)
@@ -347,18 +292,4 @@ def run():
         shutil.rmtree(folder, ignore_errors=True)
 
 
-def main():
-    ok = False
-    try:
-        register_staged_workbench()
-        run()
-        ok = True
-    except Exception:
-        log(traceback.format_exc())
-    log("GUI-TESTS-OK" if ok else "GUI-TESTS-FAILED")
-    _log.close()
-    sys.stdout.flush()
-    os._exit(0 if ok else 1)
-
-
-QtCore.QTimer.singleShot(1000, main)
+start("gui_mesh", run)

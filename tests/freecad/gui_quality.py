@@ -2,8 +2,8 @@
 
 Run it under Xvfb from the repository root after building:
 
-    QTWEBENGINE_CHROMIUM_FLAGS=--no-sandbox BISECTMESH_BUILD_MOD=/work/build-fc/Mod/BisectMesh \
-    BISECTMESH_ARTIFACTS=/work/build-fc/test-artifacts \
+    QTWEBENGINE_CHROMIUM_FLAGS=--no-sandbox BISECTMESH_BUILD_MOD=/work/build-lead/Mod/BisectMesh \
+    BISECTMESH_ARTIFACTS=/work/build-lead/test-artifacts \
     xvfb-run -a -s "-screen 0 1400x900x24" freecad tests/freecad/gui_quality.py
 
 It registers the staged workbench, meshes a box minus a cylinder with FreeCAD's Gmsh mesher,
@@ -17,68 +17,16 @@ quality_invalid_panel.png.
 
 import os
 import sys
-import traceback
 
 import FreeCAD
 import FreeCADGui
-from PySide import QtCore, QtGui
+from PySide import QtGui
 
-BUILD_MOD = os.environ.get("BISECTMESH_BUILD_MOD", "/work/build-fc/Mod/BisectMesh")
-ARTIFACTS = os.environ.get("BISECTMESH_ARTIFACTS", "/work/build-fc/test-artifacts")
 HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/gui_quality.py")))
-os.makedirs(ARTIFACTS, exist_ok=True)
-_log = open(os.path.join(ARTIFACTS, "gui_quality.log"), "w")
+sys.path.insert(0, HERE)
+from gui_harness import ARTIFACTS, check, command_state, log, settle, start, widen_combo_view  # noqa: E402
 
-
-def log(text):
-    _log.write(text + "\n")
-    _log.flush()
-    sys.stdout.write(text + "\n")
-
-
-def check(condition, what):
-    log(("ok    " if condition else "FAIL  ") + what)
-    if not condition:
-        raise AssertionError(what)
-
-
-def settle(ms=300):
-    loop = QtCore.QEventLoop()
-    QtCore.QTimer.singleShot(ms, loop.quit)
-    loop.exec_()
-    FreeCADGui.updateGui()
-
-
-def register_staged_workbench():
-    sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != os.path.abspath(BUILD_MOD)]
-    sys.path.insert(0, BUILD_MOD)
-    sys.path.insert(1, HERE)
-    for name in [n for n in sys.modules if n == "bisectmesh" or n.startswith("bisectmesh.")]:
-        del sys.modules[name]
-    if "BisectMeshWorkbench" not in FreeCADGui.listWorkbenches():
-        path = os.path.join(BUILD_MOD, "InitGui.py")
-        with open(path) as source:
-            exec(compile(source.read(), path, "exec"), {"__name__": "BisectMeshInitGui"})
-    FreeCADGui.activateWorkbench("BisectMeshWorkbench")
-    import bisectmesh
-
-    check(os.path.abspath(bisectmesh.__file__).startswith(os.path.abspath(BUILD_MOD)),
-          "bisectmesh imported from %s" % os.path.dirname(bisectmesh.__file__))
-
-
-def command_state():
-    command = FreeCADGui.Command.get("BisectMesh_Quality")
-    active = command.isActive()
-    actions = command.getAction()
-    return active, actions[0].toolTip() if actions else ""
-
-
-def widen_combo_view(width):
-    """A fresh FreeCAD profile starts with a narrow combo view; widen it for the screenshots."""
-    window = FreeCADGui.getMainWindow()
-    for dock in window.findChildren(QtGui.QDockWidget):
-        if dock.objectName() in ("Combo View", "Tasks") and dock.isVisible():
-            window.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
+COMMAND = "BisectMesh_Quality"
 
 
 def save_view(name):
@@ -103,14 +51,14 @@ def run():
     FreeCADGui.Selection.clearSelection()
     settle()
 
-    active, tooltip = command_state()
+    active, tooltip = command_state(COMMAND)
     check(not active, "command inactive without a selection")
     check("Select a FEM mesh object" in tooltip, "tooltip says why: %r" % tooltip.split("\n")[0])
     FreeCADGui.Selection.addSelection(part)
-    check(not command_state()[0], "command inactive with a Part object selected")
+    check(not command_state(COMMAND)[0], "command inactive with a Part object selected")
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(mesh)
-    active, tooltip = command_state()
+    active, tooltip = command_state(COMMAND)
     check(active, "command active with a FEM mesh selected")
 
     widen_combo_view(440)
@@ -185,18 +133,4 @@ def run():
     check(quality_panel.QualityPanel.open_panel is None, "panel closed")
 
 
-def main():
-    ok = False
-    try:
-        register_staged_workbench()
-        run()
-        ok = True
-    except Exception:
-        log(traceback.format_exc())
-    log("GUI-TESTS-OK" if ok else "GUI-TESTS-FAILED")
-    _log.close()
-    sys.stdout.flush()
-    os._exit(0 if ok else 1)
-
-
-QtCore.QTimer.singleShot(1000, main)
+start("gui_quality", run)

@@ -62,22 +62,22 @@ def theory_deflection():
     return bending + shear, bending, shear
 
 
-def _which_ccx():
-    prefs = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Fem/Ccx")
-    if not prefs.GetBool("UseStandardCcxLocation", True):
-        path = prefs.GetString("ccxBinaryPath", "")
+def _which(program, group, standard_key, path_key):
+    """The program FreeCAD's FEM would run: the path set in its preferences, else the one on PATH."""
+    prefs = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Fem/" + group)
+    if not prefs.GetBool(standard_key, True):
+        path = prefs.GetString(path_key, "")
         if path and os.path.isfile(path):
             return path
-    return shutil.which("ccx")
+    return shutil.which(program)
+
+
+def _which_ccx():
+    return _which("ccx", "Ccx", "UseStandardCcxLocation", "ccxBinaryPath")
 
 
 def _which_gmsh():
-    prefs = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Fem/Gmsh")
-    if not prefs.GetBool("UseStandardGmshLocation", True):
-        path = prefs.GetString("gmshBinaryPath", "")
-        if path and os.path.isfile(path):
-            return path
-    return shutil.which("gmsh")
+    return _which("gmsh", "Gmsh", "UseStandardGmshLocation", "gmshBinaryPath")
 
 
 def make_box(doc):
