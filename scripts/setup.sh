@@ -30,3 +30,12 @@ echo "\$ bisect-mesh examples/cube-cavity-adjacent-cube.poly -n 10000 -o cube.vt
 "$prefix/bin/bisect-mesh" "$root/examples/cube-cavity-adjacent-cube.poly" -n 10000 -o "$out/cube.vtu" --stats "$out/cube.json" 2>&1 | sed "s|$out/||"
 cat "$out/cube.json"; echo
 rm -rf "$out"
+echo
+# The FreeCAD user's job: a CSG solid (a box minus a cylinder) meshed in-process by the workbench.
+echo "\$ freecadcmd: bisectmesh.mesh_shape(box minus cylinder, elements=5000, order=2)"
+freecadcmd -c "import Part, FreeCAD, bisectmesh
+s = Part.makeBox(20, 10, 10).cut(Part.makeCylinder(3, 10, FreeCAD.Vector(10, 0, 5), FreeCAD.Vector(0, 1, 0)))
+r = {}
+m = bisectmesh.mesh_shape(s, elements=5000, order=2, report=r)
+print('A FreeCAD solid meshed in-process: %d tetra10, %d nodes, smallest dihedral %.1f deg, %.2f s' % (m.VolumeCount, m.NodeCount, r['stats']['quality']['dihedral_min'], r['stats']['times']['total']))" \
+  2>/dev/null | grep "in-process"
