@@ -94,6 +94,11 @@ struct DecomposeOptions {
   double min_angle_deg = 5;      // reject cuts meeting a face, or making a corner, under this
   double near_vertex_rel = 0.1;  // reject planes passing nearer to a vertex than this times the
                                  // shortest edge at that vertex (unless the vertex is on it)
+  double preferred_near_vertex_rel = 0.3;  // the wider margin the planar cuts of a region's first
+                                           // edges try before near_vertex_rel: a plane that only
+                                           // just misses a vertex leaves an edge much shorter than
+                                           // the input's, and the face grids grade from that edge;
+                                           // no larger than near_vertex_rel: not used
   double short_edge_rel = 0.05;  // reject chords shorter than this times the shortest edge of
                                  // the face they cross
   double reflex_tol_deg = 1e-3;  // an edge is reflex when its angle exceeds 180 + this
@@ -107,6 +112,8 @@ struct DecomposeStats {
   std::map<std::string, std::size_t> bisections;  // by method: cut_face, splitting, ...
   std::map<std::string, std::size_t> rejected;    // candidate planes by reason
   std::size_t deferred = 0;                       // reflex edges put back on the list (6.7 (3)-(4))
+  bool narrow_margin_retry = false;  // decomposed again with near_vertex_rel only, after the
+                                     // wider margin's cuts led to a region no plane resolved
   double prepare_seconds = 0, bisect_seconds = 0;
 };
 

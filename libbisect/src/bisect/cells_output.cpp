@@ -63,7 +63,8 @@ std::string decompose_stats_json(const DecomposeStats& s) {
   dict(s.bisections);
   o << ", \"rejected_planes\": ";
   dict(s.rejected);
-  o << ", \"deferred_edges\": " << s.deferred << ", \"times\": {\"init_geom\": " << s.prepare_seconds
+  o << ", \"deferred_edges\": " << s.deferred << ", \"narrow_margin_retry\": " << (s.narrow_margin_retry ? "true" : "false")
+    << ", \"times\": {\"init_geom\": " << s.prepare_seconds
     << ", \"bisect\": " << s.bisect_seconds << "}}";
   return o.str();
 }

@@ -53,8 +53,8 @@ TEST(GeneratedDecomposition, DoubleSphereWithHole) {
 TEST(GeneratedDecomposition, RandomCsgSolids) {
   const char* env = std::getenv("BISECT_RANDOM_SOLIDS");
   const int n = env ? std::atoi(env) : 1000;
-  int valid = 0, input_errors = 0, meshing_errors = 0, hollow = 0;
-  std::string errors;
+  int valid = 0, input_errors = 0, meshing_errors = 0, hollow = 0, retries = 0;
+  std::string errors, retried;
   for (int seed = 1; seed <= n; ++seed) {
     std::string what;
     bool cavity = false;
@@ -66,6 +66,7 @@ TEST(GeneratedDecomposition, RandomCsgSolids) {
       const testing::CellCheck c = check(in, d, "csg");
       EXPECT_TRUE(c.problems.empty()) << what << "\n" << report(c);
       valid += c.problems.empty();
+      if (d.stats.narrow_margin_retry) ++retries, retried += " " + std::to_string(seed);
     } catch (const InputError& e) {
       ++input_errors;
       EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
@@ -77,12 +78,32 @@ TEST(GeneratedDecomposition, RandomCsgSolids) {
     }
   }
   std::cout << "random CSG solids: " << n << " (" << hollow << " hollow): " << valid << " valid decompositions, "
-            << input_errors << " input errors, " << meshing_errors << " meshing errors\n";
+            << input_errors << " input errors, " << meshing_errors << " meshing errors; " << retries
+            << " decomposed again with the narrow vertex margin (seeds" << retried << ")\n";
   std::cout << errors;
   RecordProperty("valid", valid);
   RecordProperty("input_errors", input_errors);
   RecordProperty("meshing_errors", meshing_errors);
+  RecordProperty("narrow_margin_retries", retries);
   EXPECT_EQ(valid + input_errors + meshing_errors, n);
+}
+
+// Seed 631 (a box and a prism) is one the wider vertex margin's cuts lead into a region that no
+// plane resolves: the decomposition starts again with the thesis's margin alone, and the result
+// is exactly that decomposition.
+TEST(GeneratedDecomposition, NarrowMarginRetryKeepsTheMesh) {
+  const PolyInput in = testing::random_csg_polyhedron(631);
+  const Decomposition d = decompose(in);
+  EXPECT_TRUE(d.stats.narrow_margin_retry);
+  const testing::CellCheck c = check(in, d, "retry");
+  EXPECT_TRUE(c.problems.empty()) << report(c);
+  DecomposeOptions narrow_only;
+  narrow_only.preferred_near_vertex_rel = narrow_only.near_vertex_rel;
+  const Decomposition n = decompose(in, narrow_only);
+  EXPECT_FALSE(n.stats.narrow_margin_retry);
+  EXPECT_EQ(d.cells.size(), n.cells.size());
+  EXPECT_EQ(d.stats.bisections, n.stats.bisections);
+  EXPECT_EQ(d.model.nodes.size(), n.model.nodes.size());
 }
 
 }  // namespace
