@@ -105,6 +105,15 @@ struct DecomposeOptions {
   int max_candidates = 7;        // planes per edge (6.4.1), at least 10 degrees apart
   double band_rel = 0.4;         // edge following: relative distance of the bandwidth test (7.3.3)
   std::function<bool(double)> progress;  // fraction done; return false to cancel
+
+  // Whether the wider margin is tried at all, and these options with it off (the thesis's margin
+  // alone, as the retry after a failed decomposition uses).
+  bool widens_margin() const { return preferred_near_vertex_rel > near_vertex_rel; }
+  DecomposeOptions thesis_margin_only() const {
+    DecomposeOptions o = *this;
+    o.preferred_near_vertex_rel = near_vertex_rel;
+    return o;
+  }
 };
 
 struct DecomposeStats {

@@ -118,7 +118,7 @@ DecomposeOptions relaxed(const DecomposeOptions& opt, int level) {
 // Whether level -1 differs from level 0 (it does not on the narrow retry): an equal stage would
 // only repeat the same planes.
 bool stage_applies(const DecomposeOptions& opt, int level) {
-  return level >= 0 || opt.preferred_near_vertex_rel > opt.near_vertex_rel;
+  return level >= 0 || opt.widens_margin();
 }
 
 // A convex cell may keep a face with a hole that a coplanar face of the same cell fills (a slab
@@ -315,14 +315,12 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
 // CSG solids, against 1). Such an input is decomposed again from the start with the thesis's
 // margin only, so that the wider margin never costs a mesh.
 Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
-  if (opt.preferred_near_vertex_rel <= opt.near_vertex_rel) return decompose_once(std::move(model), opt);
+  if (!opt.widens_margin()) return decompose_once(std::move(model), opt);
   const auto t0 = Clock::now();
   try {
     return decompose_once(model, opt);
   } catch (const MeshingError&) {
-    DecomposeOptions narrow = opt;
-    narrow.preferred_near_vertex_rel = opt.near_vertex_rel;
-    Decomposition d = decompose_once(std::move(model), narrow);
+    Decomposition d = decompose_once(std::move(model), opt.thesis_margin_only());
     d.stats.narrow_margin_retry = true;
     d.stats.bisect_seconds = since(t0);
     return d;

@@ -135,9 +135,7 @@ TEST(Decompose, WiderVertexMarginKeepsCutEdgesLong) {
   const PolyInput in = poly(flange_disc());
   const double chord = 2 * 0.35 * std::sin(M_PI / 26);
   const Decomposition wide = decompose(in);
-  DecomposeOptions narrow_only;
-  narrow_only.preferred_near_vertex_rel = narrow_only.near_vertex_rel;
-  const Decomposition narrow = decompose(in, narrow_only);
+  const Decomposition narrow = decompose(in, DecomposeOptions().thesis_margin_only());
   test::expect_valid_cells(wide, summarize(in).volume);
   test::expect_valid_cells(narrow, summarize(in).volume);
   EXPECT_FALSE(wide.stats.narrow_margin_retry);

@@ -97,9 +97,7 @@ TEST(GeneratedDecomposition, NarrowMarginRetryKeepsTheMesh) {
   EXPECT_TRUE(d.stats.narrow_margin_retry);
   const testing::CellCheck c = check(in, d, "retry");
   EXPECT_TRUE(c.problems.empty()) << report(c);
-  DecomposeOptions narrow_only;
-  narrow_only.preferred_near_vertex_rel = narrow_only.near_vertex_rel;
-  const Decomposition n = decompose(in, narrow_only);
+  const Decomposition n = decompose(in, DecomposeOptions().thesis_margin_only());
   EXPECT_FALSE(n.stats.narrow_margin_retry);
   EXPECT_EQ(d.cells.size(), n.cells.size());
   EXPECT_EQ(d.stats.bisections, n.stats.bisections);
