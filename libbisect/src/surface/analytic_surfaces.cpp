@@ -4,44 +4,6 @@
 
 namespace bisect::surface {
 
-Vec3 ParametricSurface::normal(const Vec2& uv) const {
-  Vec3 du, dv;
-  derivatives(uv, &du, &dv);
-  return du.cross(dv).normalized();
-}
-
-Vec2 ParametricSurface::closest_point(const Vec3& p, const Vec2& guess) const {
-  const Vec2 lo = uv_min(), hi = uv_max();
-  auto clamp = [&](Vec2 q) { return q.cwiseMax(lo).cwiseMin(hi); };
-  Vec2 uv = clamp(guess);
-  for (int it = 0; it < 30; ++it) {
-    // Gauss-Newton on |x(u, v) - p|^2: (J^T J) d = -J^T r
-    Vec3 du, dv;
-    derivatives(uv, &du, &dv);
-    const Vec3 r = point(uv) - p;
-    Eigen::Matrix2d jtj;
-    jtj << du.dot(du), du.dot(dv), du.dot(dv), dv.dot(dv);
-    const Vec2 g(du.dot(r), dv.dot(r));
-    if (std::abs(jtj.determinant()) < 1e-300) break;
-    const Vec2 step = -jtj.inverse() * g;
-    const Vec2 next = clamp(uv + step);
-    if ((next - uv).norm() < 1e-15 * (hi - lo).norm()) {
-      uv = next;
-      break;
-    }
-    uv = next;
-  }
-  // a stalled Newton near a fold: compare with the best point of a coarse grid around the guess
-  double best = (point(uv) - p).squaredNorm();
-  for (int i = -4; i <= 4; ++i)
-    for (int j = -4; j <= 4; ++j) {
-      const Vec2 q = clamp(guess + Vec2(i, j).cwiseProduct(hi - lo) / 64.0);
-      const double d = (point(q) - p).squaredNorm();
-      if (d < best * (1 - 1e-9)) best = d, uv = q;
-    }
-  return uv;
-}
-
 Vec3 CylinderSurface::point(const Vec2& uv) const {
   const double t = sweep_ * uv.x();
   return Vec3(r_ * std::cos(t), r_ * std::sin(t), h_ * uv.y());

@@ -3,9 +3,11 @@
 #pragma once
 #include <array>
 
-#include "surface/parametric_surface.hpp"
+#include "bisect/parametric_surface.hpp"
 
 namespace bisect::surface {
+
+using bisect::ParametricSurface;
 
 // origin + u * a + v * b
 class PlaneSurface : public ParametricSurface {

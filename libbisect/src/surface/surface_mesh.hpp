@@ -4,9 +4,11 @@
 #include <array>
 #include <vector>
 
-#include "surface/parametric_surface.hpp"
+#include "bisect/parametric_surface.hpp"
 
 namespace bisect::surface {
+
+using bisect::ParametricSurface;
 
 struct SurfaceMesh {
   std::vector<Vec2> uv;
