@@ -185,14 +185,14 @@ PYBIND11_MODULE(_core, m) {
           in.node_spacing.assign(h, h + in.nodes.size());
         }
         GenerateOptions opt;
-        opt.elements = elements;
-        opt.size = size;
+        opt.sizing.elements = elements;
+        opt.sizing.size = size;
         opt.order = order;
-        opt.optimize_passes = optimize;
-        opt.smooth_passes = smooth;
-        opt.sliver_rounds = slivers;
-        opt.grading = grading;
-        opt.boundary_flips = boundary_flips;
+        opt.optimize.passes = optimize;
+        opt.optimize.smooth_passes = smooth;
+        opt.optimize.sliver_rounds = slivers;
+        opt.sizing.grading = grading;
+        opt.optimize.boundary_flips = boundary_flips;
         opt.threads = threads;
         opt.merge_coplanar = merge_coplanar;
         // the callback runs on this thread (generate_mesh promises it) with the GIL taken back;
@@ -226,9 +226,9 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("nodes"), py::arg("faces"), py::arg("regions"), py::kw_only(), py::arg("elements") = 0, py::arg("size") = 0.0,
       // the defaults are GenerateOptions' own, so that Python and the CLI mesh alike
-      py::arg("order") = kDefaults.order, py::arg("optimize") = kDefaults.optimize_passes,
-      py::arg("smooth") = kDefaults.smooth_passes, py::arg("slivers") = kDefaults.sliver_rounds,
-      py::arg("grading") = kDefaults.grading, py::arg("boundary_flips") = kDefaults.boundary_flips,
+      py::arg("order") = kDefaults.order, py::arg("optimize") = kDefaults.optimize.passes,
+      py::arg("smooth") = kDefaults.optimize.smooth_passes, py::arg("slivers") = kDefaults.optimize.sliver_rounds,
+      py::arg("grading") = kDefaults.sizing.grading, py::arg("boundary_flips") = kDefaults.optimize.boundary_flips,
       py::arg("threads") = kDefaults.threads, py::arg("merge_coplanar") = kDefaults.merge_coplanar,
       py::arg("node_spacing") = py::none(), py::arg("progress") = py::none(), py::arg("source") = "",
       "Tetrahedral mesh of a polyhedral input, in-process (the pipeline of `bisect-mesh INPUT -o OUT`).\n\n"

@@ -36,7 +36,7 @@
 
 #include "bisect/io.hpp"
 #include "bisect/quality.hpp"
-#include "fill/tet_complex.hpp"
+#include "tet/tet_complex.hpp"
 
 extern char** environ;
 
@@ -238,10 +238,10 @@ std::vector<Vec3> random_points(int n, unsigned seed) {
 }
 
 TetMesh ours_on_points(const std::vector<Vec3>& X, bool delaunay) {
-  fill::TetComplex cx(X);
-  std::vector<fill::Tet> t = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
-  for (fill::Tet& x : t)
-    if (!fill::positive(X, x)) std::swap(x[0], x[1]);
+  tet::TetComplex cx(X);
+  std::vector<tet::Tet> t = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+  for (tet::Tet& x : t)
+    if (!tet::positive(X, x)) std::swap(x[0], x[1]);
   cx.build(t);
   Index last = 0;
   for (Index v = 8; v < static_cast<Index>(X.size()); ++v) {
@@ -258,7 +258,7 @@ TetMesh ours_on_points(const std::vector<Vec3>& X, bool delaunay) {
   cx.improve_all(1 << 30);
   TetMesh m;
   m.nodes = X;
-  for (const fill::Tet& x : cx.tets()) m.add_tet(x.data());
+  for (const tet::Tet& x : cx.tets()) m.add_tet(x.data());
   return m;
 }
 

@@ -10,27 +10,45 @@
 #include <string>
 
 #include "bisect/poly_input.hpp"
+#include "bisect/polyhedral_model.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/tet_mesh.hpp"
 
 namespace bisect {
 
-struct GenerateOptions {
-  std::int64_t elements = 0;  // the thesis's R; 0: the input's own (its header), else -s
+// The nodal spacing of thesis 6.11 and A2 for a volume V and R elements: Np = cbrt(8 V / R)
+// (real meshes hold more tetrahedra than V / (Np^3 / 8): the count is then calibrated).
+double nominal_spacing(double volume, double elements);
+
+// How big the elements are.
+struct SizeOptions {
+  std::int64_t elements = 0;  // the thesis's R; 0: the input's own (its header), else `size`
   double size = 0;            // an absolute spacing Np instead of R, when > 0
-  int optimize_passes = 3;    // global min-max transformation passes (7.5)
-  int smooth_passes = 3;      // Laplace smoothing passes over interior nodes, one after each of those
-  int sliver_rounds = 8;      // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
-  int order = 1;              // 1: 4-node tetrahedra; 2: 10-node, mid-nodes on the straight edges
-  // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
-  // the face grids are already optimised and on the ../shared models it removed no more
-  // slivers than it made
-  bool boundary_flips = false;
   // interior nodes graded from the boundary's fine spacing (graded_nodes.hpp): the size grows by
   // this much per unit of distance from a short boundary edge up to Np; 0 (the default): the
   // shrinking's uniform Np everywhere. Off by default: measured on the ../shared STL models it
   // moved the slivers around rather than removing them (README, Tetrahedral meshes).
   double grading = 0;
+};
+
+// The global improvement once the cells are filled (thesis 7.5 and 6.9.2).
+struct OptimizeOptions {
+  int passes = 3;         // global min-max transformation passes (7.5)
+  int smooth_passes = 3;  // Laplace smoothing passes over interior nodes, one after each of those
+  int sliver_rounds = 8;  // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
+  // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
+  // the face grids are already optimised and on the ../shared models it removed no more
+  // slivers than it made
+  bool boundary_flips = false;
+};
+
+// Every option of the generator, in one place: the CLI parses into it and the Python module
+// binds it, with these defaults.
+struct GenerateOptions {
+  SizeOptions sizing;
+  DecomposeOptions decompose;
+  OptimizeOptions optimize;
+  int order = 1;  // 1: 4-node tetrahedra; 2: 10-node, mid-nodes on the straight edges
   // exactly coplanar neighbouring triangles (STL, OFF) merged into polygon faces first, so
   // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
   // number the merged faces

@@ -6,7 +6,7 @@
 #include <unordered_set>
 
 #include "bisect/errors.hpp"
-#include "bisect/loop_triangulation.hpp"
+#include "geom/loop_triangulation.hpp"
 #include "bisect/region_split.hpp"
 #include "bisect/section.hpp"
 #include "domain/face_split.hpp"

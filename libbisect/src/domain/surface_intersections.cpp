@@ -7,7 +7,7 @@
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
-#include "bisect/loop_triangulation.hpp"
+#include "geom/loop_triangulation.hpp"
 #include "geom/predicates.hpp"
 
 namespace bisect {

@@ -86,7 +86,12 @@ void ordered_parallel(std::size_t n, int threads, Work&& work, Commit&& commit, 
     }
     if (is_ready) {
       if (failed[next]) std::rethrow_exception(failed[next]);
-      commit(next++);
+      try {
+        commit(next++);
+      } catch (...) {
+        stop.store(true);  // at once: no helper starts another job while the error unwinds
+        throw;
+      }
       continue;
     }
     if (run_one()) continue;  // help while the next one in order is being made

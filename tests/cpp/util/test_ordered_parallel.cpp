@@ -74,19 +74,28 @@ TEST(OrderedParallel, ReportsTheFirstFailureInOrder) {
 TEST(OrderedParallel, AFailingCommitStopsTheOtherJobs) {
   for (int threads : {1, 2, 4}) {
     const std::size_t n = 200;
-    std::atomic<int> ran{0};
+    std::atomic<int> ran{0}, after{0};
+    std::atomic<bool> failed{false};
     EXPECT_THROW(ordered_parallel(
                      n, threads,
                      [&](std::size_t) {
                        ++ran;
+                       if (failed.load()) ++after;
                        std::this_thread::sleep_for(std::chrono::microseconds(200));
                      },
                      [&](std::size_t i) {
-                       if (i == 2) throw std::runtime_error("cancelled");
+                       if (i == 2) {
+                         failed.store(true);
+                         throw std::runtime_error("cancelled");
+                       }
                      }),
                  std::runtime_error);
-    // the jobs under way when it failed finish; no new ones start
-    EXPECT_LT(ran.load(), 3 + 2 * threads + 8) << threads;
+    // the jobs under way when it failed finish, and no new one starts: at most one job per
+    // thread may have begun between the failure and the stop (a generous bound, as a loaded
+    // machine may pause the committing thread there), far below the 200 there are. How many
+    // ran before the failure depends on the scheduler, not on the code: not asserted.
+    EXPECT_LE(after.load(), 2 * threads) << threads;
+    EXPECT_LT(ran.load(), static_cast<int>(n)) << threads;
   }
 }
 

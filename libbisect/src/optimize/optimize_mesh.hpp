@@ -1,0 +1,25 @@
+// The global improvement once the cells are filled (thesis 6.9.2): passes of the local min-max
+// transformations of 7.5 over the whole mesh (only the constrained faces hold: input faces and
+// interfaces; the cut faces are gone) in turn with Laplace smoothing, each opening moves for the
+// other; then the repair of the slivers they leave.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "bisect/generate.hpp"
+#include "tet/tet_complex.hpp"
+
+namespace bisect::optimize {
+
+// Sliver repair works on tetrahedra whose smallest dihedral angle is under this (degrees).
+inline constexpr double kSliverBelowDeg = 10;
+
+struct OptimizeCounts {
+  std::int64_t flips = 0;         // transformations applied
+  std::int64_t sliver_moves = 0;  // node moves and insertions of the sliver repair
+};
+
+// cx works on X; fixed[v]: node v never moves (X may grow: the sliver repair inserts nodes).
+OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt);
+
+}  // namespace bisect::optimize

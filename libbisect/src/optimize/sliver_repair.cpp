@@ -1,0 +1,146 @@
+#include "optimize/sliver_repair.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geom/predicates.hpp"
+#include "optimize/node_stars.hpp"
+
+namespace bisect::optimize {
+
+using tet::positive;
+using tet::tet_angle_key;
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double tet_worst(const std::vector<Vec3>& X, const Tet& u) { return worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]); }
+
+double star_worst(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around) {
+  double worst = -1;
+  for (Index t : around) {
+    worst = std::max(worst, tet_worst(X, tets[t]));
+    if (worst >= 2) break;
+  }
+  return worst;
+}
+
+// The mean edge length: the scale of a tetrahedron's repair steps.
+double mean_edge(const std::vector<Vec3>& X, const Tet& u) {
+  double edge = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
+  return edge;
+}
+
+}  // namespace
+
+double worst_dihedral_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  if (geom::orient3d(a, b, c, d) <= 0) return 2;
+  const Vec3* p[4] = {&a, &b, &c, &d};
+  Vec3 n[4];
+  for (int i = 0; i < 4; ++i) {  // face i opposite corner i, its normal turned away from it
+    const Vec3 &u = *p[(i + 1) % 4], &v = *p[(i + 2) % 4], &w = *p[(i + 3) % 4];
+    n[i] = (v - u).cross(w - u);
+    if (n[i].dot(*p[i] - u) > 0) n[i] = -n[i];
+    const double len = n[i].norm();
+    if (!(len > 0)) return 1;
+    n[i] /= len;
+  }
+  double worst = -1;  // the dihedral angle at the edge of faces i and j has cosine -n_i . n_j
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) worst = std::max(worst, -n[i].dot(n[j]));
+  return worst;
+}
+
+std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed_nodes, double below_deg, int rounds) {
+  const double limit = std::cos(below_deg * kPi / 180);
+  std::vector<char> fixed = fixed_nodes;  // grows with the nodes inserted (free)
+  std::size_t total = 0;
+  for (int round = 0; round < rounds; ++round) {
+    const std::vector<std::vector<Index>> around = incidence(X.size(), cx.tet, &cx.alive);
+    std::size_t moved = 0;
+    std::vector<Index> touched, stuck;  // stuck: no move of a node improves them
+    for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+      if (!cx.alive[t]) continue;
+      const Tet& u = cx.tet[t];
+      if (tet_worst(X, u) <= limit) continue;
+      const double edge = mean_edge(X, u);
+      Index best_v = -1;
+      Vec3 best_p;
+      double best = 2;
+      for (int k = 0; k < 4; ++k) {
+        const Index v = u[k];
+        if (fixed[v]) continue;
+        const double base = star_worst(X, cx.tet, around[v]);
+        const Vec3 &a = X[u[(k + 1) % 4]], &b = X[u[(k + 2) % 4]], &c = X[u[(k + 3) % 4]];
+        Vec3 n = (b - a).cross(c - a);
+        if (n.dot(X[v] - a) < 0) n = -n;
+        if (n.norm() > 0) n.normalize();
+        const Vec3 old = X[v];
+        // off the opposite face's plane at four steps, the neighbours' mean, and eight fixed
+        // directions (the corners of a cube) at a quarter of the edge
+        std::vector<Vec3> candidates{old + 0.1 * edge * n, old + 0.2 * edge * n, old + 0.35 * edge * n, old + 0.5 * edge * n,
+                                     neighbour_mean(X, cx.tet, around[v], v)};
+        for (int c = 0; c < 8; ++c)
+          candidates.push_back(old + 0.25 * edge / std::sqrt(3.0) * Vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1));
+        for (const Vec3& p : candidates) {
+          X[v] = p;
+          const double w = star_worst(X, cx.tet, around[v]);
+          if (w < base - 1e-12 && w < best) best = w, best_v = v, best_p = p;
+        }
+        X[v] = old;
+      }
+      if (best_v < 0) {
+        stuck.push_back(static_cast<Index>(t));
+        continue;
+      }
+      X[best_v] = best_p;
+      ++moved;
+      touched.insert(touched.end(), around[best_v].begin(), around[best_v].end());
+    }
+    // the tetrahedra around moved nodes: their keys, then the transformations from their faces
+    cx.moved(touched);
+    cx.improve_around(touched);
+    // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
+    // typical case) gets a new free node half an edge inside it, away from its largest face
+    // (the boundary face, when it has one), inserted with a Delaunay cavity, which takes the
+    // flat tetrahedron when its circumsphere holds the node; the next round moves that node
+    // where its tetrahedra are best.
+    std::size_t inserted = 0;
+    for (Index t : stuck) {
+      if (round + 1 >= rounds || !cx.alive[t]) continue;
+      const Tet u = cx.tet[t];
+      if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;
+      if (tet_worst(X, u) <= limit) continue;
+      // the largest boundary face's area normal, else the largest face's (faces' normals point
+      // out of t): a flat tetrahedron's largest face may be an inner one, whose normal would
+      // send the node out of the mesh
+      Vec3 outward = Vec3::Zero();
+      bool on_boundary = false;
+      for (int f = 0; f < 4; ++f) {
+        const auto fv = cx.face(t, f);
+        const Vec3 n = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]);
+        const bool b = cx.nb[t][f] < 0;
+        if ((b && !on_boundary) || (b == on_boundary && n.squaredNorm() > outward.squaredNorm())) outward = n, on_boundary = b;
+      }
+      const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
+      X.push_back(here - 0.5 * mean_edge(X, u) * outward.normalized());
+      fixed.push_back(0);
+      const std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), t);
+      if (made.empty()) {  // on a face or node after all: leave it
+        X.pop_back();
+        fixed.pop_back();
+        continue;
+      }
+      ++inserted;
+      cx.improve_around(made);
+    }
+    if (moved + inserted == 0) break;
+    total += moved + inserted;
+  }
+  return total;
+}
+
+}  // namespace bisect::optimize

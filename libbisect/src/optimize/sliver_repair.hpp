@@ -1,0 +1,24 @@
+// Sliver repair: a tetrahedron with a small dihedral angle that the local transformations
+// leave (typically a sliver: four nodes near one circle, which no flip among its neighbours
+// improves) has one of its free nodes moved off the plane of the face opposite it, or to its
+// neighbours' mean, whichever gives the tetrahedra around that node the largest smallest
+// dihedral angle; one whose four nodes are all fixed gets a new free node half an edge inside
+// it (a Delaunay insertion), which the next round moves; the transformations run again
+// around every change.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "tet/tet_complex.hpp"
+
+namespace bisect::optimize {
+
+// Up to `rounds` rounds of moves (and insertions: X grows) on the tetrahedra whose smallest
+// dihedral angle is below `below_deg`. cx must work on X. Returns the moves and insertions made.
+std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds);
+
+// The cosine of a tetrahedron's smallest dihedral angle (1 for a flat one), 2 when it is not
+// positively oriented: smaller is better.
+double worst_dihedral_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+}  // namespace bisect::optimize

@@ -1,0 +1,16 @@
+// Laplace smoothing of the interior nodes (thesis 6.9.2, optimisation (2)): each free node moves
+// to the mean of its neighbours when every tetrahedron around it stays positive and their
+// smallest solid angle does not fall. Nodes marked `fixed` (on input faces and region
+// interfaces) never move; every other node may (inside the cells, and on the cut faces, which
+// the mesh no longer keeps once the cells are joined).
+#pragma once
+#include <vector>
+
+#include "tet/tet_complex.hpp"
+
+namespace bisect::optimize {
+
+// Returns the number of moves made.
+std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<tet::Tet>& tets, const std::vector<char>& fixed, int passes);
+
+}  // namespace bisect::optimize

@@ -1,0 +1,76 @@
+#include "pipeline/count_calibration.hpp"
+
+#include <cmath>
+
+#include "pipeline/cell_filling.hpp"
+
+namespace bisect::pipeline {
+namespace {
+
+struct NodeTally {
+  double boundary = 0, interior = 0;
+};
+NodeTally tally_nodes(const PolyhedralModel& m, const Built& b) {
+  NodeTally n;
+  for (char k : node_kinds(m, b)) (k == kOnInputFace ? n.boundary : n.interior) += k != kUnused;
+  return n;
+}
+
+double predict_tets(const NodeTally& n, double scale) { return scale * (6.2 * n.interior + 2.65 * n.boundary); }
+
+// The spacing whose nodes predict `want` tetrahedra: a cube-root step from `start`, then
+// bisection in log Np once two spacings bracket the count (on small models the count jumps with
+// the segments per edge and the shrinking layers, so it may not be met exactly). Only the nodes
+// are placed (a fraction of a filling).
+double search_spacing(const Decomposition& d, double start, double want, double scale, int threads, double grading, GenerateStats& st) {
+  double lo = 0, hi = 0, trial = start, best = start, best_miss = 1e300;
+  for (int round = 0; round < 10; ++round) {
+    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, threads, grading, &st.gen_nodes, true)), scale);
+    const double miss = std::abs(predicted - want);
+    if (miss < best_miss) best_miss = miss, best = trial;
+    if (miss <= 0.02 * want) break;
+    if (predicted > want) lo = std::max(lo, trial);
+    else hi = hi > 0 ? std::min(hi, trial) : trial;
+    const double next = lo > 0 && hi > 0 ? std::sqrt(lo * hi) : trial * std::cbrt(predicted / want);
+    if (std::abs(next / trial - 1) < 1e-3) break;
+    trial = next;
+  }
+  return best;
+}
+
+}  // namespace
+
+Calibrated fill_to_count(const Decomposition& d, double start, double size, std::int64_t want, const GenerateOptions& opt,
+                         const std::function<bool(double)>& fill_progress, GenerateStats& st) {
+  Calibrated out;
+  double np = start, last = -1, scale = 1, best_miss = 1e300;
+  const double target = static_cast<double>(want);
+  const int threads = opt.threads;
+  const double grading = opt.sizing.grading;
+  for (int fill_round = 0; fill_round < 3; ++fill_round) {
+    const double spacing = size > 0 ? size : search_spacing(d, np, target, scale, threads, grading, st);
+    if (last > 0 && std::abs(spacing / last - 1) < 1e-3) break;  // nothing new to try
+    last = spacing;
+    Built again = place_nodes(d, spacing, threads, grading, &st.gen_nodes);
+    fill_cells(d, again, opt.delaunay_insertion, threads, fill_progress, &st.gen_tets);
+    ++out.fillings;
+    const double count = static_cast<double>(again.tets.size());
+    const double miss = std::abs(count - target);
+    scale = count / predict_tets(tally_nodes(d.model, again), 1);
+    if (miss < best_miss) best_miss = miss, out.built = std::move(again), out.spacing = spacing;
+    if (size > 0 || best_miss <= 0.05 * target) break;
+    np = spacing;  // the next search starts here
+  }
+  if (size <= 0 && best_miss > 0.2 * target) {
+    // out of reach: tell what the input allows (the count at a spacing the size of the model,
+    // where only the input's own nodes and edges are left), as measured by the last filling
+    double scratch = 0;
+    double reach = 0;  // at least half the model's diameter
+    for (const Vec3& p : d.model.nodes) reach = std::max(reach, (p - d.model.nodes.front()).norm());
+    const Built coarsest = place_nodes(d, 2 * reach, threads, grading, &scratch, true);
+    out.count_floor = std::llround(predict_tets(tally_nodes(d.model, coarsest), scale));
+  }
+  return out;
+}
+
+}  // namespace bisect::pipeline

@@ -1,0 +1,115 @@
+// The 3D generator's stage sequence for polyhedral inputs (thesis 6.9.2): preparation and
+// convex decomposition, the count calibration with node placement and cell filling, the global
+// optimisation, the mesh assembly. Each stage lives in its own file of this folder (or of
+// nodes/, tet/, optimize/); this one wires them and keeps the progress and the stage times.
+#include "bisect/generate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <unordered_set>
+
+#include "bisect/errors.hpp"
+#include "bisect/polyhedral_model.hpp"
+#include "domain/merge_facets.hpp"
+#include "optimize/optimize_mesh.hpp"
+#include "pipeline/count_calibration.hpp"
+#include "pipeline/mesh_assembly.hpp"
+
+namespace bisect {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+}  // namespace
+
+double nominal_spacing(double volume, double elements) { return std::cbrt(8 * volume / elements); }
+
+TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, GenerateStats* stats) {
+  const auto t_all = Clock::now();
+  GenerateStats st;
+  const PolyInput in = opt.merge_coplanar ? merge_coplanar_triangles(original) : original;
+  if (opt.order != 1 && opt.order != 2) throw InputError("element order " + std::to_string(opt.order) + ": give 1 (4-node) or 2 (10-node tetrahedra)");
+  const std::int64_t want = opt.sizing.elements > 0 ? opt.sizing.elements : in.required_elements;
+  if (opt.sizing.size <= 0 && want <= 0) throw InputError(in.source + ": no required number of elements (give -n or -s)");
+  // progress: decomposition to 0.2, each filling of the cells to 0.8 (a calibration round
+  // starts again from 0.2: the fraction shown never goes back), the optimisation to 1
+  double shown = 0;
+  std::function<bool(double)> progress;
+  if (opt.progress)
+    progress = [&](double x) {
+      shown = std::max(shown, x);
+      return opt.progress(shown);
+    };
+  DecomposeOptions dopt = opt.decompose;
+  if (progress) dopt.progress = [&](double x) { return progress(0.2 * x); };
+  const Decomposition d = decompose(in, dopt);
+  st.init_geom = d.stats.prepare_seconds;
+  st.bisect = d.stats.bisect_seconds;
+  st.convex_cells = static_cast<std::int64_t>(d.cells.size());
+  std::vector<Index> meshed;  // input regions that got cells (cavities get none)
+  for (const ConvexCell& c : d.cells)
+    if (std::find(meshed.begin(), meshed.end(), c.source_region) == meshed.end()) meshed.push_back(c.source_region);
+  st.regions = static_cast<std::int64_t>(meshed.size());
+  double volume = 0;
+  for (const ConvexCell& c : d.cells) volume += pipeline::cell_polytope(d.model, c).volume();
+  const double start = opt.sizing.size > 0 ? opt.sizing.size : nominal_spacing(volume, static_cast<double>(want));
+  std::function<bool(double)> fill_progress;
+  if (progress) fill_progress = [&](double x) { return progress(0.2 + 0.6 * x); };
+  pipeline::Calibrated cal = pipeline::fill_to_count(d, start, opt.sizing.size, want, opt, fill_progress, st);
+  pipeline::Built& b = cal.built;
+  st.fillings = cal.fillings;
+  st.count_floor = cal.count_floor;
+  st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
+  st.graded_nodes = b.graded_nodes;
+  st.spacing = cal.spacing;
+  // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
+  const auto t_opt = Clock::now();
+  tet::TetComplex cx(b.X);
+  cx.build(std::move(b.tets), std::move(b.region));
+  {
+    // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5)
+    // within their input face
+    std::unordered_set<tet::FaceKey, tet::FaceKeyHash> input_faces;
+    for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
+      const ModelFace& face = d.model.faces[f];
+      if (!face.alive || face.source < 0) continue;
+      for (const auto& t : b.grids.face_tris[f]) {
+        input_faces.insert(tet::face_key(t[0], t[1], t[2]));
+        if (face.front < 0 || face.back < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
+      }
+    }
+    cx.constrain(input_faces);
+    cx.boundary_flips = opt.optimize.boundary_flips;
+  }
+  // nodes on input faces stay where they are
+  std::vector<char> fixed = pipeline::node_kinds(d.model, b);
+  for (char& k : fixed) k = k != pipeline::kInside;
+  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize);
+  st.flips += oc.flips;
+  st.sliver_moves = oc.sliver_moves;
+  if (progress && !progress(1.0)) throw Cancelled();
+  st.optimize = since(t_opt);
+  TetMesh out = pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);
+  st.nodes = static_cast<std::int64_t>(out.nodes.size());
+  st.tets = static_cast<std::int64_t>(out.num_tets());
+  st.total = since(t_all);
+  if (stats) *stats = st;
+  return out;
+}
+
+std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q) {
+  std::ostringstream o;
+  o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
+    << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
+    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves
+    << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
+    << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
+    << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
+    << "}, \"quality\": " << quality_json(q) << "}";
+  return o.str();
+}
+
+}  // namespace bisect

@@ -1,0 +1,81 @@
+#include "pipeline/node_placement.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "nodes/cell_nodes.hpp"
+#include "nodes/graded_nodes.hpp"
+
+namespace bisect::pipeline {
+
+nodes::Polytope cell_polytope(const PolyhedralModel& m, const ConvexCell& c) {
+  nodes::Polytope p;
+  std::vector<int> local(m.nodes.size(), -1);
+  for (std::size_t k = 0; k < c.faces.size(); ++k) {
+    const ModelFace& f = m.faces[c.faces[k]];
+    std::vector<int> loop;
+    for (Index v : f.loops[0]) {
+      if (local[v] < 0) {
+        local[v] = static_cast<int>(p.v.size());
+        p.v.push_back(m.nodes[v]);
+      }
+      loop.push_back(local[v]);
+    }
+    if (!c.outward[k]) std::reverse(loop.begin(), loop.end());
+    p.faces.push_back(std::move(loop));
+    p.normal.push_back(c.outward[k] ? f.normal : Vec3(-f.normal));
+    p.offset.push_back(c.outward[k] ? f.offset : -f.offset);
+  }
+  return p;
+}
+
+Built place_nodes(const Decomposition& d, double np, int threads, double grading, double* gen_nodes, bool count_only) {
+  Built b;
+  const auto t0 = std::chrono::steady_clock::now();
+  mesh2d::FaceGridOptions fo;
+  fo.size = np;
+  fo.nodes_only = count_only;
+  fo.threads = threads;
+  b.grids = mesh2d::mesh_faces(d.model, fo);
+  b.X = b.grids.nodes;
+  b.boundary_nodes = b.X.size();
+  b.interior.assign(d.cells.size(), {});
+  std::vector<std::vector<Vec3>> uniform;
+  for (std::size_t c = 0; c < d.cells.size(); ++c) {
+    b.polys.push_back(cell_polytope(d.model, d.cells[c]));
+    uniform.push_back(nodes::shrink_cell_nodes(b.polys.back(), np));
+  }
+  // graded from the boundary's fine spacing (short edges); the shrinking's alone elsewhere
+  nodes::GradedNodeStats gs;
+  const auto placed = nodes::graded_cell_nodes(b.polys, uniform, b.grids.nodes, b.grids.spacing, np, grading, &gs);
+  b.graded_nodes = static_cast<std::int64_t>(gs.added);
+  for (std::size_t c = 0; c < d.cells.size(); ++c)
+    for (const Vec3& p : placed[c]) {
+      b.X.push_back(p);
+      b.interior[c].push_back(static_cast<Index>(b.X.size() - 1));
+    }
+  *gen_nodes += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return b;
+}
+
+std::vector<char> node_kinds(const PolyhedralModel& m, const Built& b) {
+  std::vector<char> kind(b.X.size(), kUnused);
+  for (std::size_t v = m.nodes.size(); v < b.X.size(); ++v) kind[v] = kInside;
+  for (const ModelFace& f : m.faces) {
+    if (!f.alive) continue;
+    const char k = f.source >= 0 ? kOnInputFace : kInside;
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index a = loop[i], c = loop[(i + 1) % loop.size()];
+        kind[a] = std::max(kind[a], k);
+        const auto e = b.grids.edge_nodes.find({std::min(a, c), std::max(a, c)});
+        if (e != b.grids.edge_nodes.end())
+          for (Index v : e->second) kind[v] = std::max(kind[v], k);
+      }
+  }
+  for (std::size_t v = m.nodes.size(); v < b.boundary_nodes; ++v)
+    if (b.grids.face_of[v] >= 0 && m.faces[b.grids.face_of[v]].source >= 0) kind[v] = kOnInputFace;
+  return kind;
+}
+
+}  // namespace bisect::pipeline

@@ -1,0 +1,221 @@
+#include "tet/tet_complex.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <cmath>
+#include <unordered_map>
+
+#include "bisect/errors.hpp"
+#include "bisect/quality.hpp"
+#include "bisect/tet_mesh.hpp"
+#include "geom/predicates.hpp"
+
+namespace bisect::tet {
+
+using geom::orient3d;
+
+FaceKey face_key(Index a, Index b, Index c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
+}
+
+bool positive(const std::vector<Vec3>& X, const Tet& t) { return orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) > 0; }
+
+double tet_angle_key(const std::vector<Vec3>& X, const Tet& t) { return min_solid_angle_tan_half(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
+
+void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
+  tet = std::move(tets);
+  tag = std::move(tags);
+  tag.resize(tet.size(), 0);
+  q.resize(tet.size());
+  for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_angle_key(X, tet[t]);
+  nb.assign(tet.size(), {-1, -1, -1, -1});
+  alive.assign(tet.size(), 1);
+  cmask_.assign(tet.size(), 0);
+  born_.assign(tet.size(), ++clock_);
+  failed_.clear();
+  free_.clear();
+  std::unordered_map<FaceKey, std::pair<Index, int>, FaceKeyHash> open;
+  open.reserve(tet.size() * 2);
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(static_cast<Index>(t), f);
+      const FaceKey k = face_key(fv[0], fv[1], fv[2]);
+      auto it = open.find(k);
+      if (it == open.end()) {
+        open.emplace(k, std::make_pair(static_cast<Index>(t), f));
+      } else {
+        nb[t][f] = it->second.first;
+        nb[it->second.first][it->second.second] = static_cast<Index>(t);
+        open.erase(it);
+      }
+    }
+}
+
+std::vector<Tet> TetComplex::tets() const {
+  std::vector<Tet> out;
+  out.reserve(live_count());
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) out.push_back(tet[t]);
+  return out;
+}
+
+void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces) {
+  if (faces.empty()) return;
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t])
+      for (int f = 0; f < 4; ++f) {
+        const auto fv = face(static_cast<Index>(t), f);
+        if (faces.count(face_key(fv[0], fv[1], fv[2]))) cmask_[t] |= static_cast<unsigned char>(1u << f);
+      }
+}
+
+void TetComplex::refresh_quality() {
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) q[t] = tet_angle_key(X, tet[t]);
+  failed_.clear();
+}
+
+void TetComplex::moved(const std::vector<Index>& tets) {
+  ++clock_;
+  for (Index t : tets) {
+    q[t] = tet_angle_key(X, tet[t]);
+    born_[t] = clock_;
+  }
+}
+
+std::vector<Index> TetComplex::tags() const {
+  std::vector<Index> out;
+  out.reserve(live_count());
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) out.push_back(tag[t]);
+  return out;
+}
+
+std::array<Index, 3> TetComplex::face(Index t, int f) const {
+  const auto& c = kTetFace[f];
+  return {tet[t][c[0]], tet[t][c[1]], tet[t][c[2]]};
+}
+
+bool TetComplex::is_constrained(Index t, int f) const { return nb[t][f] < 0 || (cmask_[t] >> f & 1u); }
+
+int TetComplex::corner_of(Index t, Index v) const {
+  for (int k = 0; k < 4; ++k)
+    if (tet[t][k] == v) return k;
+  return -1;
+}
+
+std::vector<Index> TetComplex::tets_at(Index v) const {
+  std::vector<Index> around;
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t] && corner_of(static_cast<Index>(t), v) >= 0) around.push_back(static_cast<Index>(t));
+  return around;
+}
+
+int TetComplex::face_towards(Index t, Index other) const {
+  for (int f = 0; f < 4; ++f)
+    if (nb[t][f] == other) return f;
+  return -1;
+}
+
+std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std::vector<Tet>& fresh, bool new_boundary) {
+  // the old set's outside faces, with the tetrahedron (and its face) on the other side
+  struct Outer {
+    FaceKey key;
+    Index n;
+    int nf;
+    bool held;  // constrained
+  };
+  std::vector<Outer> outer;
+  const unsigned in_old = new_stamp();
+  for (Index o : old) mark_[o] = in_old;
+  for (Index o : old)
+    for (int f = 0; f < 4; ++f) {
+      const Index n = nb[o][f];
+      if (marked(n, in_old)) continue;
+      const auto fv = face(o, f);
+      int nf = -1;
+      if (n >= 0)
+        for (int g = 0; g < 4; ++g)
+          if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) nf = g;
+      outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf, is_constrained(o, f)});
+    }
+  const Index inherited = old.empty() ? 0 : tag[old.front()];
+  for (Index o : old) {
+    alive[o] = 0;
+    free_.push_back(o);
+  }
+  std::vector<Index> ids;
+  for (const Tet& t : fresh) {
+    Index id;
+    if (!free_.empty()) {
+      id = free_.back();
+      free_.pop_back();
+      tet[id] = t;
+      nb[id] = {-1, -1, -1, -1};
+      alive[id] = 1;
+      tag[id] = inherited;
+      q[id] = tet_angle_key(X, t);
+      cmask_[id] = 0;
+      born_[id] = clock_ + 1;
+    } else {
+      id = static_cast<Index>(tet.size());
+      tet.push_back(t);
+      nb.push_back({-1, -1, -1, -1});
+      alive.push_back(1);
+      tag.push_back(inherited);
+      q.push_back(tet_angle_key(X, t));
+      cmask_.push_back(0);
+      born_.push_back(clock_ + 1);
+    }
+    ids.push_back(id);
+  }
+  // match every new face with another new one or with an old outside face: sorted by key,
+  // equal keys meet (a new face pairs with at most one other)
+  struct Side {
+    FaceKey key;
+    Index t;
+    int f;
+    bool fresh, held;
+  };
+  std::vector<Side> sides;
+  sides.reserve(ids.size() * 4 + outer.size());
+  for (Index id : ids)
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(id, f);
+      sides.push_back({face_key(fv[0], fv[1], fv[2]), id, f, true, false});
+    }
+  for (const Outer& o : outer) sides.push_back({o.key, o.n, o.nf, false, o.held});
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    if (x.key.a != y.key.a) return x.key.a < y.key.a;
+    if (x.key.b != y.key.b) return x.key.b < y.key.b;
+    if (x.key.c != y.key.c) return x.key.c < y.key.c;
+    return x.fresh > y.fresh;
+  });
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
+    const Side& x = sides[i];
+    if (!x.fresh) {  // an old face no new tetrahedron took up
+      i = j;
+      continue;
+    }
+    if (j - i == 1 && new_boundary) {  // a new face of the outer boundary
+      i = j;
+      continue;
+    }
+    if (j - i != 2) throw MeshingError("tetrahedral complex: a replacement does not fill the space it replaces");
+    const Side& y = sides[i + 1];
+    nb[x.t][x.f] = y.t;
+    if (y.t >= 0) nb[y.t][y.f] = x.t;
+    if (y.held && y.t >= 0) cmask_[x.t] |= static_cast<unsigned char>(1u << x.f);  // a kept constrained face
+    i = j;
+  }
+  ++clock_;
+  return ids;
+}
+
+}  // namespace bisect::tet

@@ -1,0 +1,164 @@
+// A tetrahedral complex that changes in place: the working structure of the boundary-constrained
+// min-max triangulation (thesis 7.6) and of the local transformations (7.5). Tetrahedra are
+// positively oriented (tet_mesh.hpp), face f lies opposite corner f, and nb[t][f] is the
+// tetrahedron across it (-1 on the boundary of what is being meshed). Every change goes through
+// `replace`, which swaps a set of tetrahedra for another set filling the same space and relinks
+// the new ones to each other and to the old outside neighbours, so a flip, a point insertion
+// and the removal of a helper vertex are each a few lines.
+//
+// Constrained faces (the boundary of a cell, or input faces and region interfaces in the global
+// pass) are the faces with no neighbour plus the faces given to `constrain`: no transformation
+// crosses or removes them. They are kept as a bit per tetrahedron face, handed on by `replace`
+// (the hottest test of the transformations: a hash lookup per face step cost a tenth of the time).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "bisect/types.hpp"
+
+namespace bisect::tet {
+
+using Tet = std::array<Index, 4>;
+
+// A face's three nodes, sorted.
+struct FaceKey {
+  Index a, b, c;
+  bool operator==(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+FaceKey face_key(Index a, Index b, Index c);
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    return (static_cast<std::size_t>(k.a) * 73856093u) ^ (static_cast<std::size_t>(k.b) * 19349663u) ^ (static_cast<std::size_t>(k.c) * 83492791u);
+  }
+};
+
+class TetComplex {
+ public:
+  explicit TetComplex(const std::vector<Vec3>& nodes) : X(nodes) {}
+
+  const std::vector<Vec3>& X;
+  std::vector<Tet> tet;
+  std::vector<Tet> nb;
+  std::vector<char> alive;
+  std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
+  std::vector<double> q;   // per tetrahedron: tet_angle_key, the min-max criterion
+  // The outer boundary's faces with the (planar) input face each lies in. With boundary_flips,
+  // two boundary faces of one input face that meet at an edge take the quadrilateral's other
+  // diagonal when that raises the smallest solid angle (7.5, the 2-2 transformation) and keeps
+  // the boundary triangles' angles (at least 20 degrees, or the old ones); the map follows.
+  std::unordered_map<FaceKey, Index, FaceKeyHash> surface_tag;
+  bool boundary_flips = false;
+  // Edge removal (a small dynamic programme per edge) is tried only where a tetrahedron's
+  // smallest solid angle is below this key (tet_angle_key); above it the gain is small and the
+  // cost is not. The default, tan(0.1), is Ω < 0.2 sr (the regular tetrahedron's is 0.551).
+  double edge_removal_below = 0.10033467208545055;
+
+  // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
+  // default to 0.
+  void build(std::vector<Tet> tets, std::vector<Index> tags = {});
+  // The live tetrahedra, and their tags in the same order.
+  std::vector<Tet> tets() const;
+  std::vector<Index> tags() const;
+  // Marks these faces (of the current tetrahedra) as constrained; faces not in the complex are
+  // ignored.
+  void constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces);
+  void refresh_quality();  // after the nodes moved (smoothing)
+  void moved(const std::vector<Index>& tets);  // after some tetrahedra's nodes moved
+  std::size_t live_count() const { return tet.size() - free_.size(); }
+
+  // Swaps the tetrahedra `old` for `fresh` (same region of space). Returns the new ids.
+  // new_boundary: faces of `fresh` that match nothing are outer boundary (the 2-2
+  // transformation re-triangulates it), else that is an error.
+  std::vector<Index> replace(const std::vector<Index>& old, const std::vector<Tet>& fresh, bool new_boundary = false);
+
+  // Face f's nodes, ordered so that their right-hand normal points out of t.
+  std::array<Index, 3> face(Index t, int f) const;
+  bool is_constrained(Index t, int f) const;
+  int corner_of(Index t, Index v) const;  // -1 when v is not a corner
+  std::vector<Index> tets_at(Index v) const;  // the live tetrahedra with corner v (a full scan)
+  int face_towards(Index t, Index other) const;  // the face of t shared with `other`, -1 if none
+
+  // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
+  // when the walk does not settle); -1 when p is outside every tetrahedron.
+  Index locate(const Vec3& p, Index start) const;
+  // Inserts node v (its position already in X) inside the complex: the tetrahedra whose
+  // closure holds it are split (1-4 inside, 2-6 on a face, n-2n on an edge). Returns the new
+  // tetrahedra, empty when v lies outside or on an existing node.
+  std::vector<Index> insert(Index v, Index start);
+  // The same insertion with a Delaunay cavity (Bowyer-Watson, exact insphere): every
+  // tetrahedron reachable without crossing a constrained face whose circumsphere holds v is
+  // replaced too, the cavity shrunk until v sees all its faces from inside.
+  std::vector<Index> insert_delaunay(Index v, Index start);
+
+  // Local min-max transformations (7.5) from the given faces onwards, whenever they raise the
+  // smallest solid angle of the tetrahedra involved: 2-3 across a face, 2-2 at the outer
+  // boundary (boundary_flips), and the removal of an
+  // interior edge whose ring has 3 to kMaxRing tetrahedra, the ring's polygon triangulated at
+  // its best (3-2 and the 4-4 of 7.5 are its rings of 3 and 4; larger rings reach further out
+  // of the local minima 7.6.1 describes). Returns the number applied.
+  std::int64_t improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops);
+  // Removes the interior node v by flips (7.6: the helper vertex): edges at v are taken out of
+  // their rings (the ring's best triangulation, whatever its quality) until v is in four
+  // tetrahedra, which a 4-1 flip merges. False, with v still in the complex, when no edge at v
+  // can go (its ring is longer than kMaxRing or has no valid triangulation).
+  bool remove_vertex(Index v);
+  // improve() from every face of the given tetrahedra (new or changed ones), without a bound.
+  std::int64_t improve_around(const std::vector<Index>& tets);
+  // improve() from every unconstrained interior face.
+  std::int64_t improve_all(std::int64_t max_ops);
+
+  // The tetrahedra around the edge (a, b) of t, in order, into ring (at most `cap`; cap + 1 is
+  // returned when there are more), and apex[i], the node that ring[i] shares with ring[i + 1]
+  // besides a and b. `closed`: the ring closes (an interior edge); `held`: it ends at a
+  // constrained face (the edge lies on one).
+  int edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index* apex, bool* closed, bool* held) const;
+
+ private:
+  std::vector<Index> free_;
+  std::vector<unsigned char> cmask_;  // bit f: face f is constrained (besides nb < 0)
+  // Edge removal remembers its failures: an edge whose ring of tetrahedra is unchanged since
+  // (every one born before the failure, and no node moved) fails again, so its dynamic
+  // programme is skipped. born_: a clock value per tetrahedron, set when made or moved.
+  std::vector<std::uint64_t> born_;
+  std::uint64_t clock_ = 0;
+  // A failure: the clock then and the ring; kForever for an edge on a constrained face.
+  static constexpr std::size_t kMaxRing = 7;
+  static constexpr std::uint64_t kForever = ~std::uint64_t{0};
+  struct Failure {
+    std::uint64_t stamp;
+    int k;
+    std::array<Index, kMaxRing> ring;
+  };
+  std::unordered_map<std::uint64_t, Failure> failed_;  // edge (low node << 32 | high) -> failure
+  // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
+  // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
+  mutable std::vector<unsigned> mark_;
+  mutable unsigned stamp_ = 0;
+  unsigned new_stamp() const {
+    mark_.resize(tet.size(), 0);
+    if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
+    return stamp_;
+  }
+  bool marked(Index t, unsigned s) const { return t >= 0 && static_cast<std::size_t>(t) < mark_.size() && mark_[t] == s; }
+  // The tetrahedra whose closure holds p, from t0 (which does) across the faces p lies on;
+  // false when p is on a node or on a constrained face.
+  bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
+  bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
+  bool try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue);
+  // The ring polygon p[0..k) around edge (a, b) triangulated at its best by dynamic programming,
+  // every tetrahedron's key above `need`: the tetrahedra into `fresh`; false when none is.
+  bool ring_triangulation(Index a, Index b, const Index* p, std::size_t k, double need, std::vector<Tet>* fresh) const;
+  bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
+};
+
+// Positive orientation test of a tetrahedron given by node ids.
+bool positive(const std::vector<Vec3>& X, const Tet& t);
+// The min-max criterion's key: tan(Ω/2) of the smallest solid angle Ω, which orders tetrahedra
+// as Ω does without an arctangent.
+double tet_angle_key(const std::vector<Vec3>& X, const Tet& t);
+
+}  // namespace bisect::tet

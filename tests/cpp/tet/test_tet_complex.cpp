@@ -1,0 +1,226 @@
+// The working tetrahedral complex of the cell fill (thesis 7.5, 7.6): adjacency kept by
+// `replace`, point insertion inside, on a face and on an edge, Delaunay insertion, and the
+// min-max transformations never touching constrained faces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "bisect/quality.hpp"
+#include "tet/tet_complex.hpp"
+#include "geom/predicates.hpp"
+
+namespace bisect::tet {
+namespace {
+
+// Every live tetrahedron positive, adjacency symmetric and matching shared faces.
+void expect_consistent(const TetComplex& cx) {
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    if (!cx.alive[t]) continue;
+    EXPECT_TRUE(positive(cx.X, cx.tet[t])) << t;
+    for (int f = 0; f < 4; ++f) {
+      const Index n = cx.nb[t][f];
+      if (n < 0) continue;
+      ASSERT_TRUE(cx.alive[n]);
+      const int g = cx.face_towards(n, static_cast<Index>(t));
+      ASSERT_GE(g, 0) << "adjacency not symmetric";
+      const auto a = cx.face(static_cast<Index>(t), f), b = cx.face(n, g);
+      EXPECT_TRUE(face_key(a[0], a[1], a[2]) == face_key(b[0], b[1], b[2]));
+    }
+  }
+}
+
+double volume(const TetComplex& cx) {
+  double v = 0;
+  for (const Tet& t : cx.tets()) v += (cx.X[t[1]] - cx.X[t[0]]).dot((cx.X[t[2]] - cx.X[t[0]]).cross(cx.X[t[3]] - cx.X[t[0]])) / 6;
+  return v;
+}
+
+std::size_t boundary_faces(const TetComplex& cx) {
+  std::size_t n = 0;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t])
+      for (int f = 0; f < 4; ++f) n += cx.nb[t][f] < 0;
+  return n;
+}
+
+// The unit cube as 6 tetrahedra around its diagonal 0-6.
+std::vector<Vec3> cube_nodes() { return {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}; }
+std::vector<Tet> cube_tets(const std::vector<Vec3>& X) {
+  std::vector<Tet> t = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+  for (Tet& x : t)
+    if (!positive(X, x)) std::swap(x[0], x[1]);
+  return t;
+}
+
+TEST(TetComplex, InsertInsideOnAFaceAndOnAnEdge) {
+  std::vector<Vec3> X = cube_nodes();
+  X.push_back({0.6, 0.3, 0.2});  // 8: inside one tetrahedron
+  X.push_back({0.5, 0.5, 0.25});  // 9: on the face 0-2-6 (z = x / 2 ... on the plane x = y)
+  X.push_back({0.5, 0.5, 0.5});  // 10: on the diagonal 0-6, shared by all six
+  TetComplex cx(X);
+  cx.build(cube_tets(X));
+  EXPECT_EQ(boundary_faces(cx), 12u);
+  EXPECT_EQ(cx.insert(8, 0).size(), 4u);
+  expect_consistent(cx);
+  const std::size_t before = cx.live_count();
+  const auto made = cx.insert(9, 0);
+  EXPECT_EQ(cx.live_count() - before, 4u);  // 2 tetrahedra on the face become 6
+  EXPECT_EQ(made.size(), 6u);
+  expect_consistent(cx);
+  const std::size_t before2 = cx.live_count();
+  EXPECT_FALSE(cx.insert(10, 0).empty());
+  EXPECT_GT(cx.live_count(), before2);
+  expect_consistent(cx);
+  EXPECT_NEAR(volume(cx), 1.0, 1e-12);
+  EXPECT_EQ(boundary_faces(cx), 12u);  // the boundary untouched
+  EXPECT_TRUE(cx.insert(3, 0).empty());  // an existing node is not inserted again
+}
+
+TEST(TetComplex, PointsOnTheBoundaryAreRefused) {
+  std::vector<Vec3> X = cube_nodes();
+  X.push_back({0.5, 0.5, 0});  // on the bottom face
+  X.push_back({2, 2, 2});      // outside
+  TetComplex cx(X);
+  cx.build(cube_tets(X));
+  EXPECT_TRUE(cx.insert(8, 0).empty());
+  EXPECT_TRUE(cx.insert(9, 0).empty());
+  EXPECT_TRUE(cx.insert_delaunay(8, 0).empty());
+  EXPECT_EQ(cx.live_count(), 6u);
+}
+
+TEST(TetComplex, RandomInsertionsBothWaysStayValidAndImprove) {
+  for (bool delaunay : {false, true}) {
+    std::vector<Vec3> X = cube_nodes();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.05, 0.95);
+    for (int i = 0; i < 300; ++i) X.push_back({u(rng), u(rng), u(rng)});
+    TetComplex cx(X);
+    cx.build(cube_tets(X));
+    Index last = 0;
+    for (Index v = 8; v < static_cast<Index>(X.size()); ++v) {
+      const auto made = delaunay ? cx.insert_delaunay(v, last) : cx.insert(v, last);
+      ASSERT_FALSE(made.empty()) << v;
+      last = made.front();
+    }
+    expect_consistent(cx);
+    EXPECT_NEAR(volume(cx), 1.0, 1e-12);
+    double worst_before = 1e300;
+    for (const Tet& t : cx.tets()) worst_before = std::min(worst_before, tet_angle_key(X, t));
+    const std::int64_t ops = cx.improve_all(1000000);
+    EXPECT_GT(ops, 0);
+    expect_consistent(cx);
+    EXPECT_NEAR(volume(cx), 1.0, 1e-12);
+    EXPECT_EQ(boundary_faces(cx), 12u);
+    double worst_after = 1e300;
+    for (const Tet& t : cx.tets()) worst_after = std::min(worst_after, tet_angle_key(X, t));
+    EXPECT_GE(worst_after, worst_before) << (delaunay ? "delaunay" : "minmax");
+  }
+}
+
+TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
+  // a tall tetrahedron on a flat one across their shared face: the 2-3 flip raises the smallest
+  // solid angle from 0.078 to 0.207 sr; constraining the face stops it
+  std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 0.4, 0.6}, {0.5, 0.4, -0.1}};
+  auto make = [&] {
+    std::vector<Tet> t = {{0, 1, 2, 3}, {0, 1, 2, 4}};
+    for (Tet& x : t)
+      if (!positive(X, x)) std::swap(x[0], x[1]);
+    return t;
+  };
+  TetComplex free_cx(X);
+  free_cx.build(make());
+  EXPECT_EQ(free_cx.improve_all(10), 1);
+  EXPECT_EQ(free_cx.live_count(), 3u);
+  TetComplex held(X);
+  held.build(make());
+  held.constrain({face_key(0, 1, 2)});
+  EXPECT_EQ(held.improve_all(10), 0);
+  EXPECT_EQ(held.live_count(), 2u);
+}
+
+// Removing a node by flips (the helper of 7.6): the cube's six tetrahedra with a node at the
+// centre inserted (twelve around it, star of the centre), and a tetrahedron split 1-4; the
+// node goes, the boundary and the volume stay, every tetrahedron is positive.
+TEST(TetComplex, RemoveVertexByFlips) {
+  {
+    std::vector<Vec3> X = cube_nodes();
+    X.push_back({0.52, 0.47, 0.55});  // 8: near the centre, off the diagonal
+    TetComplex cx(X);
+    cx.build(cube_tets(X));
+    ASSERT_FALSE(cx.insert(8, 0).empty());
+    const std::size_t faces = boundary_faces(cx);
+    std::size_t around = 0;
+    for (const Tet& t : cx.tets()) around += std::find(t.begin(), t.end(), 8) != t.end();
+    ASSERT_GE(around, 4u);
+    EXPECT_TRUE(cx.remove_vertex(8));
+    for (const Tet& t : cx.tets()) EXPECT_EQ(std::find(t.begin(), t.end(), 8), t.end());
+    expect_consistent(cx);
+    EXPECT_EQ(boundary_faces(cx), faces);
+    EXPECT_NEAR(volume(cx), 1, 1e-12);
+    EXPECT_FALSE(cx.remove_vertex(0));  // a corner, in every tetrahedron: on the boundary, it stays
+    EXPECT_NEAR(volume(cx), 1, 1e-12);
+  }
+  {
+    std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}};
+    TetComplex cx(X);
+    Tet t{0, 1, 2, 3};
+    if (!positive(X, t)) std::swap(t[0], t[1]);
+    cx.build({t});
+    ASSERT_EQ(cx.insert(4, 0).size(), 4u);
+    EXPECT_TRUE(cx.remove_vertex(4));  // 4-1
+    ASSERT_EQ(cx.live_count(), 1u);
+    expect_consistent(cx);
+    EXPECT_FALSE(cx.remove_vertex(0));  // a boundary node is not removed
+  }
+}
+
+// The 2-2 transformation (7.5): two tetrahedra over a thin rhombus on the outer boundary, its
+// long diagonal x-y shared; the short diagonal d-e raises the smallest solid angle. It happens
+// only with boundary_flips, only within one input face, and the boundary's tags follow.
+TEST(TetComplex, TwoTwoFlipTakesTheBoundarysOtherDiagonal) {
+  const std::vector<Vec3> X = {{-1, 0, 0}, {1, 0, 0}, {0, -0.3, 0}, {0, 0.3, 0}, {0, 0, 0.5}};
+  const Index x = 0, y = 1, d = 2, e = 3, c = 4;
+  auto make = [&](TetComplex& cx, Index tag_d, Index tag_e) {
+    std::vector<Tet> t = {{x, y, d, c}, {x, y, e, c}};
+    for (Tet& u : t)
+      if (!positive(X, u)) std::swap(u[0], u[1]);
+    cx.build(t);
+    for (std::size_t k = 0; k < 2; ++k)
+      for (int f = 0; f < 4; ++f)
+        if (cx.nb[k][f] < 0) {
+          const auto fv = cx.face(static_cast<Index>(k), f);
+          const bool bottom = std::find(fv.begin(), fv.end(), c) == fv.end();
+          cx.surface_tag[face_key(fv[0], fv[1], fv[2])] = bottom ? (k == 0 ? tag_d : tag_e) : 9;
+        }
+  };
+  TetComplex off(X);
+  make(off, 1, 1);
+  EXPECT_EQ(off.improve_all(10), 0);  // boundary_flips is off by default
+  TetComplex other_faces(X);
+  make(other_faces, 1, 2);
+  other_faces.boundary_flips = true;
+  EXPECT_EQ(other_faces.improve_all(10), 0);  // the two triangles lie in different input faces
+  TetComplex on(X);
+  make(on, 1, 1);
+  const double before = std::min(on.q[0], on.q[1]);
+  on.boundary_flips = true;
+  EXPECT_EQ(on.improve_all(10), 1);
+  ASSERT_EQ(on.live_count(), 2u);
+  double after = 1e300;
+  for (const Tet& t : on.tets()) {
+    EXPECT_TRUE(positive(X, t));
+    EXPECT_NE(std::find(t.begin(), t.end(), d), t.end());
+    EXPECT_NE(std::find(t.begin(), t.end(), e), t.end());
+    after = std::min(after, tet_angle_key(X, t));
+  }
+  EXPECT_GT(after, before);
+  EXPECT_EQ(on.surface_tag.count(face_key(x, y, d)), 0u);
+  EXPECT_EQ(on.surface_tag.count(face_key(x, y, e)), 0u);
+  EXPECT_EQ(on.surface_tag.at(face_key(x, d, e)), 1);
+  EXPECT_EQ(on.surface_tag.at(face_key(y, d, e)), 1);
+  EXPECT_EQ(on.surface_tag.size(), 6u);  // four sides and the two new bottom triangles
+}
+
+}  // namespace
+}  // namespace bisect::tet
