@@ -1,11 +1,12 @@
 // `bisect-mesh INPUT -o OUTPUT`: a tetrahedral mesh of a polyhedral input (the whole generator,
-// thesis 6.9.2), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
+// thesis 6.9.2) or of a B-rep (.brep, .step, .iges: the true-surface route), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
 #include <fstream>
 #include <ostream>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "bisect/io.hpp"
+#include "bisect/occ.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "mesh2d/planar_mesher.hpp"
 #include "commands.hpp"
@@ -42,9 +43,10 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
           << " nodes, angles " << st.min_angle_deg << " to " << st.max_angle_deg << " degrees, " << st.seconds_total << " s\n";
     return 0;
   }
+  const bool brep = is_brep_path(input);
+  if (brep && opt.cells_only) throw InputError("--cells-only is for polyhedral inputs (.poly, .stl, .off); " + input + " is a B-rep");
   if (!opt.cells_only) {
     if (ends_with(opt.output, ".poly")) throw InputError(opt.output + ": a tetrahedral mesh is written as .vtu, .msh, .inp or .unv");
-    const PolyInput in = read_polyhedral(input);
     GenerateOptions go;
     go.sizing.elements = opt.elements;
     go.sizing.size = opt.size;
@@ -57,7 +59,8 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.optimize.boundary_flips = opt.boundary_flips;
     go.sizing.grading = opt.grading;
     GenerateStats st;
-    const TetMesh mesh = generate_mesh(in, go, &st);
+    // a B-rep (.brep, .step, .iges) goes the true-surface route, a polyhedral input the thesis's
+    const TetMesh mesh = brep ? generate_brep_mesh(load_brep_file(input), go, &st) : generate_mesh(read_polyhedral(input), go, &st);
     write_mesh(mesh, opt.output);
     const QualitySummary q = summarize_quality(element_quality(mesh));
     if (!opt.stats.empty()) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,8 @@
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
 #include "io/face_checks.hpp"
+#include "bisect/occ.hpp"
+#include "options.hpp"
 
 namespace py = pybind11;
 using namespace bisect;
@@ -151,10 +154,44 @@ PolyInput poly_from_python(const NodeArray& nodes, const py::sequence& faces, co
   return in;
 }
 
+// A Python progress callback for the C++ pipeline: called on this thread (the pipeline promises
+// it) with the GIL taken back; an exception it raises cancels the run and reaches the caller
+// unchanged. run() releases the GIL while the work goes on.
+class ProgressBridge {
+ public:
+  explicit ProgressBridge(const py::object& progress) : progress_(progress) {}
+  std::function<bool(double)> callback() {
+    if (progress_.is_none()) return {};
+    return [this](double x) {
+      py::gil_scoped_acquire gil;
+      try {
+        const py::object r = progress_(x);
+        return r.is_none() || r.cast<bool>();
+      } catch (py::error_already_set& e) {
+        raised_.emplace(std::move(e));
+        return false;
+      }
+    };
+  }
+  template <class F>
+  void run(F&& work) {
+    try {
+      py::gil_scoped_release release;
+      work();
+    } catch (const Cancelled&) {
+      if (raised_) throw std::move(*raised_);
+      throw;
+    }
+  }
+
+ private:
+  py::object progress_;
+  std::optional<py::error_already_set> raised_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
-  const GenerateOptions kDefaults;
   m.doc() = "BisectMesh C++ core: the tetrahedral generator, quality measures, mesh validation, mesh and polyhedral I/O.";
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<MeshingError>(m, "MeshingError", PyExc_RuntimeError);
@@ -169,9 +206,8 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "generate",
-      [](const NodeArray& nodes, const py::sequence& faces, const py::sequence& regions, std::int64_t elements, double size, int order,
-         int optimize, int smooth, int slivers, double grading, bool boundary_flips, int threads, bool merge_coplanar,
-         const py::object& node_spacing, const py::object& progress, const std::string& source) {
+      [](const NodeArray& nodes, const py::sequence& faces, const py::sequence& regions, const py::object& node_spacing,
+         const py::object& progress, const std::string& source, const py::kwargs& options) {
         PolyInput in = poly_from_python(nodes, faces, regions, source);
         if (!node_spacing.is_none()) {
           const auto hint = node_spacing.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
@@ -184,62 +220,65 @@ PYBIND11_MODULE(_core, m) {
                                "; give a positive number, or 0 for no hint");
           in.node_spacing.assign(h, h + in.nodes.size());
         }
-        GenerateOptions opt;
-        opt.sizing.elements = elements;
-        opt.sizing.size = size;
-        opt.order = order;
-        opt.optimize.passes = optimize;
-        opt.optimize.smooth_passes = smooth;
-        opt.optimize.sliver_rounds = slivers;
-        opt.sizing.grading = grading;
-        opt.optimize.boundary_flips = boundary_flips;
-        opt.threads = threads;
-        opt.merge_coplanar = merge_coplanar;
-        // the callback runs on this thread (generate_mesh promises it) with the GIL taken back;
-        // an exception it raises cancels the run and reaches the caller unchanged
-        std::optional<py::error_already_set> raised;
-        if (!progress.is_none())
-          opt.progress = [&](double x) {
-            py::gil_scoped_acquire gil;
-            try {
-              const py::object r = progress(x);
-              return r.is_none() || r.cast<bool>();
-            } catch (py::error_already_set& e) {
-              raised.emplace(std::move(e));
-              return false;
-            }
-          };
+        GenerateOptions opt = python::generate_options(options);
+        ProgressBridge bridge(progress);
+        opt.progress = bridge.callback();
         TetMesh mesh;
         GenerateStats st;
         std::string stats;
-        try {
-          py::gil_scoped_release release;
+        bridge.run([&] {
           mesh = generate_mesh(in, opt, &st);
           stats = generate_stats_json(st, summarize_quality(element_quality(mesh)));
-        } catch (const Cancelled&) {
-          if (raised) throw std::move(*raised);
-          throw;
-        }
+        });
         py::dict d = mesh_to_dict(mesh);
         d["stats"] = json_loads(stats);
         return d;
       },
-      py::arg("nodes"), py::arg("faces"), py::arg("regions"), py::kw_only(), py::arg("elements") = 0, py::arg("size") = 0.0,
-      // the defaults are GenerateOptions' own, so that Python and the CLI mesh alike
-      py::arg("order") = kDefaults.order, py::arg("optimize") = kDefaults.optimize.passes,
-      py::arg("smooth") = kDefaults.optimize.smooth_passes, py::arg("slivers") = kDefaults.optimize.sliver_rounds,
-      py::arg("grading") = kDefaults.sizing.grading, py::arg("boundary_flips") = kDefaults.optimize.boundary_flips,
-      py::arg("threads") = kDefaults.threads, py::arg("merge_coplanar") = kDefaults.merge_coplanar,
-      py::arg("node_spacing") = py::none(), py::arg("progress") = py::none(), py::arg("source") = "",
+      py::arg("nodes"), py::arg("faces"), py::arg("regions"), py::kw_only(), py::arg("node_spacing") = py::none(),
+      py::arg("progress") = py::none(), py::arg("source") = "",
       "Tetrahedral mesh of a polyhedral input, in-process (the pipeline of `bisect-mesh INPUT -o OUT`).\n\n"
       "nodes (N, 3); faces: node index lists (planar polygons) or {'nodes': [...], 'hole_of': k}; regions: face "
-      "index lists or {'faces': [...], 'cavity': bool}; all numbered from 0. elements: the required number R, or "
-      "size: the spacing. grading > 0 grades the interior from fine boundary spacing (--grading); boundary_flips: "
-      "the 2-2 transformation on the boundary (--boundary-flips). node_spacing (N,): the element size each node asks "
-      "for (a density hint; 0: none); the face grids space their nodes no wider near it. progress(fraction) is called on this thread; returning False cancels (raises "
+      "index lists or {'faces': [...], 'cavity': bool}; all numbered from 0. Options as keywords (default_options() "
+      "lists them with their defaults): elements (R) or size, order, optimize, smooth, slivers, grading, "
+      "boundary_flips, threads, merge_coplanar, insertion. node_spacing (N,): the element size each node asks "
+      "for (a density hint; 0: none). progress(fraction) is called on this thread; returning False cancels (raises "
       "Cancelled). Returns the mesh dict of read_mesh (tri_tag: the input face of each boundary triangle; region: "
-      "the input region of each tetrahedron) with 'stats', the --stats JSON as a dict. Raises InputError for bad "
-      "input, MeshingError when a stage cannot finish.");
+      "the input region of each tetrahedron) with 'stats', the --stats JSON as a dict. Raises InputError (a "
+      "ValueError) for bad input or options, MeshingError when a stage cannot finish.");
+
+  m.def("default_options", &python::default_options, "The generators' keyword options with their defaults.");
+
+  m.def(
+      "mesh_brep",
+      [](const std::string& brep, const std::string& name, const py::object& write, bool arrays, const py::object& progress,
+         const py::kwargs& options) {
+        GenerateOptions opt = python::generate_options(options);
+        ProgressBridge bridge(progress);
+        opt.progress = bridge.callback();
+        TetMesh mesh;
+        GenerateStats st;
+        std::string stats;
+        const std::string path = write.is_none() ? std::string() : write.cast<std::string>();
+        bridge.run([&] {
+          const BrepInput in = load_brep_string(brep, name.empty() ? std::string("the shape") : name);
+          mesh = generate_brep_mesh(in, opt, &st);
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh)));
+          if (!path.empty()) write_mesh(mesh, path);
+        });
+        py::dict d = arrays ? mesh_to_dict(mesh) : py::dict();
+        d["stats"] = json_loads(stats);
+        return d;
+      },
+      py::arg("brep"), py::kw_only(), py::arg("name") = "", py::arg("write") = py::none(), py::arg("arrays") = true,
+      py::arg("progress") = py::none(),
+      "Tetrahedral mesh of a B-rep shape handed over as a BREP string (FreeCAD: Part.Shape.exportBrepToString()), "
+      "in-process: the true-surface route (faces meshed on their surfaces, then the 3D pipeline; order 2 curved "
+      "on the surfaces with every Jacobian positive). Options as keywords (default_options()): elements or size, "
+      "order, min_size, max_size, curvature_elements, chord_deviation, size_grading, regions ([{size, faces, "
+      "edges, vertices, solids}] with FreeCAD's numbers from 1 or names like 'Face3'), optimize, smooth, slivers, "
+      "threads, insertion. write: a path to write the mesh to (.med keeps the groups Face<k>_Nodes, "
+      "Face<k>_Faces, Solid<r> that FreeCAD's FemMesh.read loads). arrays=False: return only 'stats'. Raises "
+      "InputError (a ValueError) naming FreeCAD's Face<k>, Edge<k> or Solid<k>, MeshingError, Cancelled.");
 
   m.def(
       "element_quality",

@@ -105,7 +105,7 @@ class GenerateBindingTest(unittest.TestCase):
             core().generate(nodes, faces, [regions[0][:5]], elements=1000)
         with self.assertRaisesRegex(core().InputError, "no required number of elements"):
             core().generate(nodes, faces, regions)
-        with self.assertRaisesRegex(core().InputError, "element order 3"):
+        with self.assertRaisesRegex(core().InputError, r"order must lie between 1 and 2 \(got 3\)"):
             core().generate(nodes, faces, regions, elements=1000, order=3)
         with self.assertRaisesRegex(core().InputError, "node_spacing needs one value per node"):
             core().generate(nodes, faces, regions, elements=1000, node_spacing=[0.1])

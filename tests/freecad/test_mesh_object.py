@@ -111,7 +111,7 @@ class MeshObjectTest(unittest.TestCase):
         self.assertFalse(obj.isValid())
         message = obj.getStatusString()
         self.assertIn("OpenBox", message)
-        self.assertRegex(message, r"Solid\d|Face\d")
+        self.assertRegex(message, r"Solid1 is not closed: Edge\d+ bounds only Face\d")
 
         obj.Part = None
         self.doc.recompute()

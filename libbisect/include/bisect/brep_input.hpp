@@ -84,6 +84,10 @@ struct BrepInput {
   // Tessellates the shape with a linear deflection (model units) and an angular deflection
   // (radians). Throws InputError naming the face when a face cannot be tessellated.
   std::function<BrepTessellation(double linear, double angular)> tessellate;
+  // The source geometry, kept alive for as long as this input (libbisect/occ: the OpenCASCADE
+  // shape and its FreeCAD numbering, which BrepChecker reads); opaque to the core, and null for an
+  // input built from analytic geometry.
+  std::shared_ptr<const void> shape;
 };
 
 // Names as FreeCAD shows them: "Face12" for face 11 (0-based), and so on.

@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "bisect/brep_input.hpp"
 #include "bisect/poly_input.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "bisect/quality.hpp"
@@ -20,6 +21,13 @@ namespace bisect {
 // (real meshes hold more tetrahedra than V / (Np^3 / 8): the count is then calibrated).
 double nominal_spacing(double volume, double elements);
 
+// A local size on B-rep entities (FreeCAD's mesh regions): elements no larger than `size` on
+// these faces, edges and vertices and inside these solids (0-based, FreeCAD's numbering less 1).
+struct SizeRegion {
+  double size = 0;
+  std::vector<Index> faces, edges, vertices, solids;
+};
+
 // How big the elements are.
 struct SizeOptions {
   std::int64_t elements = 0;  // the thesis's R; 0: the input's own (its header), else `size`
@@ -27,8 +35,18 @@ struct SizeOptions {
   // interior nodes graded from the boundary's fine spacing (graded_nodes.hpp): the size grows by
   // this much per unit of distance from a short boundary edge up to Np; 0 (the default): the
   // shrinking's uniform Np everywhere. Off by default: measured on the ../shared STL models it
-  // moved the slivers around rather than removing them (README, Tetrahedral meshes).
+  // moved the slivers around rather than removing them (README, Tetrahedral meshes). The B-rep
+  // route always grades (size_grading).
   double grading = 0;
+  // The B-rep route's size field (size/size_field.hpp): sizes never below min_size nor above
+  // max_size (0: no bound); on curved faces and edges at least `curvature_elements` elements per
+  // full turn (0: no bound) and chords within `chord_deviation` of the surface (0: no bound);
+  // local sizes from regions; and the size growing by at most size_grading per unit of distance.
+  double min_size = 0, max_size = 0;
+  double curvature_elements = 12;
+  double chord_deviation = 0;
+  double size_grading = 0.3;
+  std::vector<SizeRegion> regions;
 };
 
 // The global improvement once the cells are filled (thesis 7.5 and 6.9.2).
@@ -73,6 +91,13 @@ struct GenerateStats {
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;
+  std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", ...
+  // B-rep route: the smallest angle of the surface triangles (degrees), and order 2 elements
+  // whose curved boundary edge had to be made straight to keep the Jacobian positive
+  double surface_min_angle = 0;
+  std::int64_t straightened_edges = 0;
+  std::int64_t proxy_cells = 0;  // cells filled in the proxy's geometry (proxy_fill.hpp)
+  std::int64_t joined_cells = 0; // cells joined with a neighbour to be seen whole (brep_cells.hpp)
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;
@@ -81,6 +106,14 @@ struct GenerateStats {
 // Throws InputError (bad input, no element count), MeshingError (a stage could not finish,
 // naming where) or Cancelled.
 TetMesh generate_mesh(const PolyInput& in, const GenerateOptions& opt, GenerateStats* stats = nullptr);
+
+// The B-rep route (ARCHITECTURE.md §1): the size field, every B-rep edge discretised once, the
+// faces meshed on their true surfaces (thesis ch. 5) with the decomposition's cut lines in them,
+// then the 3D pipeline on that boundary, and for order 2 mid-nodes on the true surfaces with
+// every element's Jacobian positive. Triangles are tagged with their B-rep face, tetrahedra with
+// their solid. Throws InputError (bad input or options, naming FreeCAD's Face<k>, Edge<k>,
+// Solid<k>), MeshingError (a stage could not finish, naming where) or Cancelled.
+TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, GenerateStats* stats = nullptr);
 
 // The --stats JSON of ARCHITECTURE.md §3: counts, times and the quality summary.
 std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q);

@@ -22,6 +22,9 @@ enum class ViolationKind {
                     // same edge; ids: the tetrahedra
   NonFiniteNode,    // a node with a NaN or infinite coordinate; ids: the node (the tetrahedra
                     // using it are not judged for orientation)
+  NonPositiveJacobian,  // order 2: the element's Jacobian determinant is zero or negative at a
+                        // corner or at one of the 4 Gauss points CalculiX integrates C3D10 at;
+                        // ids: tetrahedron
 };
 
 // The kind as a snake_case name ("inverted_tet"), the spelling of the CLI's JSON and Python.
@@ -32,6 +35,11 @@ struct Violation {
   std::vector<std::int64_t> ids;  // element or node numbers as reported (TetMesh::tet_id/node_id)
   std::string message;            // one line naming what and where
 };
+
+// Order 2: the smallest determinant of tetrahedron t's Jacobian over its 4 corners and the 4
+// Gauss points of the 4-point rule, divided by the straight element's (6 V, positive for a
+// positively oriented one). 1 for a straight element; <= 0 for a folded one.
+double tet10_jacobian_ratio(const TetMesh& mesh, std::size_t t);
 
 // All violations, in a stable order (by kind, then by id). An empty result means a valid mesh.
 // Mid-edge nodes of order-2 meshes count as used.

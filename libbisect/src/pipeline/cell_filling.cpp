@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "pipeline/proxy_fill.hpp"
 #include "tet/cell_fill.hpp"
 #include "util/ordered_parallel.hpp"
 
@@ -14,22 +15,18 @@ namespace {
 // One cell's filling on its own copy of its nodes (so that cells fill in parallel): local ids
 // follow the global ones in order, so the filling is the one the global ids would give.
 struct CellFilling {
-  std::vector<Index> global;  // local node -> node of b.X (a helper: -1 until committed)
+  std::vector<Index> global;  // local node -> node of X (a helper: -1 until committed)
+  std::vector<Vec3> moved;    // in_proxy: the cell's nodes' true positions after the untangling
   std::vector<Vec3> helper;   // the helper node, when one was added (left out of the mesh when removed again)
   std::vector<tet::Tet> tets;
   tet::CellFillStats stats;
 };
 
-CellFilling fill_cell(const Decomposition& d, const Built& b, const std::vector<Vec3>& nodes, std::size_t c, bool delaunay) {
-  const ConvexCell& cell = d.cells[c];
+CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const std::vector<Vec3>* proxy, bool delaunay) {
   CellFilling out;
-  std::vector<std::array<Index, 3>> boundary;
-  for (std::size_t k = 0; k < cell.faces.size(); ++k)
-    for (const auto& t : b.grids.face_tris[cell.faces[k]]) {
-      boundary.push_back(cell.outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]});
-      out.global.insert(out.global.end(), t.begin(), t.end());
-    }
-  out.global.insert(out.global.end(), b.interior[c].begin(), b.interior[c].end());
+  std::vector<std::array<Index, 3>> boundary = job.boundary;
+  for (const auto& t : boundary) out.global.insert(out.global.end(), t.begin(), t.end());
+  out.global.insert(out.global.end(), job.interior.begin(), job.interior.end());
   std::sort(out.global.begin(), out.global.end());
   out.global.erase(std::unique(out.global.begin(), out.global.end()), out.global.end());
   auto local = [&](Index v) { return static_cast<Index>(std::lower_bound(out.global.begin(), out.global.end(), v) - out.global.begin()); };
@@ -39,11 +36,19 @@ CellFilling fill_cell(const Decomposition& d, const Built& b, const std::vector<
   for (auto& t : boundary)
     for (Index& v : t) v = local(v);
   std::vector<Index> interior;
-  for (Index v : b.interior[c]) interior.push_back(local(v));
+  for (Index v : job.interior) interior.push_back(local(v));
   try {
-    out.tets = tet::fill_convex_cell(X, boundary, interior, b.polys[c].centroid(), delaunay, &out.stats);
+    if (job.in_proxy) {
+      std::vector<Vec3> P;
+      P.reserve(out.global.size() + 1);
+      for (Index v : out.global) P.push_back((*proxy)[v]);
+      out.tets = fill_in_proxy(X, P, boundary, interior, job.centre_p, delaunay, &out.stats);
+      out.moved.assign(X.begin(), X.begin() + static_cast<std::ptrdiff_t>(out.global.size()));
+    } else {
+      out.tets = tet::fill_convex_cell(X, boundary, interior, job.centre, delaunay, &out.stats);
+    }
   } catch (const MeshingError& e) {
-    throw MeshingError("convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1) + ": " + e.what());
+    throw MeshingError(job.name + ": " + e.what());
   }
   if (X.size() > out.global.size()) {  // the helper (7.6)
     out.helper.push_back(X.back());
@@ -54,36 +59,69 @@ CellFilling fill_cell(const Decomposition& d, const Built& b, const std::vector<
 
 }  // namespace
 
-void fill_cells(const Decomposition& d, Built& b, bool delaunay, int threads, const std::function<bool(double)>& progress,
-                double* gen_tets) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::size_t n = d.cells.size();
+bool fill_job_works(const CellJob& job, const std::vector<Vec3>& X, const std::vector<Vec3>* P, bool delaunay) {
+  try {
+    fill_one(job, X, P, delaunay);
+    return true;
+  } catch (const MeshingError&) {
+    return false;
+  }
+}
+
+FilledCells fill_cell_jobs(std::vector<Vec3>& X, const std::vector<CellJob>& jobs, bool delaunay, int threads,
+                           const std::function<bool(double)>& progress, const std::vector<Vec3>* P) {
+  FilledCells out;
+  const std::size_t n = jobs.size();
   std::vector<CellFilling> made(n);
   std::vector<std::size_t> largest_first(n);  // the long jobs first: no thread waits on one at the end
   for (std::size_t c = 0; c < n; ++c) largest_first[c] = c;
-  std::stable_sort(largest_first.begin(), largest_first.end(), [&](std::size_t x, std::size_t y) { return b.interior[x].size() > b.interior[y].size(); });
-  const std::vector<Vec3> nodes = b.X;  // the cells read these while helpers join b.X
+  std::stable_sort(largest_first.begin(), largest_first.end(),
+                   [&](std::size_t x, std::size_t y) { return jobs[x].interior.size() > jobs[y].interior.size(); });
+  const std::vector<Vec3> nodes = X;  // the cells read these while helpers join X
   util::ordered_parallel(
-      n, util::thread_count(threads), [&](std::size_t c) { made[c] = fill_cell(d, b, nodes, c, delaunay); },
+      n, util::thread_count(threads), [&](std::size_t c) { made[c] = fill_one(jobs[c], nodes, P, delaunay); },
       [&](std::size_t c) {
         CellFilling& f = made[c];
+        // an untangled cell's interior nodes moved (its boundary nodes, shared, did not)
+        for (std::size_t i = 0; i < f.moved.size(); ++i) X[f.global[i]] = f.moved[i];
         if (!f.helper.empty()) {
-          b.X.push_back(f.helper.front());
-          f.global.back() = static_cast<Index>(b.X.size() - 1);
+          X.push_back(f.helper.front());
+          f.global.back() = static_cast<Index>(X.size() - 1);
         }
-        b.helper_nodes += f.stats.helper;
-        b.helpers_removed += f.stats.helper_removed;
-        b.skipped_nodes += f.stats.skipped;
-        b.flips += f.stats.flips;
+        out.helper_nodes += f.stats.helper;
+        out.helpers_removed += f.stats.helper_removed;
+        out.skipped_nodes += f.stats.skipped;
+        out.flips += f.stats.flips;
         for (tet::Tet t : f.tets) {
           for (Index& v : t) v = f.global[v];
-          b.tets.push_back(t);
+          out.tets.push_back(t);
         }
-        b.region.resize(b.tets.size(), d.cells[c].source_region);
+        out.region.resize(out.tets.size(), jobs[c].region);
         f = {};
         if (progress && !progress(static_cast<double>(c + 1) / static_cast<double>(n))) throw Cancelled();
       },
       largest_first);
+  return out;
+}
+
+void fill_cells(const Decomposition& d, Built& b, bool delaunay, int threads, const std::function<bool(double)>& progress,
+                double* gen_tets) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<CellJob> jobs(d.cells.size());
+  for (std::size_t c = 0; c < d.cells.size(); ++c) {
+    const ConvexCell& cell = d.cells[c];
+    CellJob& job = jobs[c];
+    for (std::size_t k = 0; k < cell.faces.size(); ++k)
+      for (const auto& t : b.grids.face_tris[cell.faces[k]]) job.boundary.push_back(cell.outward[k] ? t : std::array<Index, 3>{t[0], t[2], t[1]});
+    job.interior = b.interior[c];
+    job.centre = b.polys[c].centroid();
+    job.region = cell.source_region;
+    job.name = "convex cell " + std::to_string(c + 1) + " of input region " + std::to_string(cell.source_region + 1);
+  }
+  FilledCells f = fill_cell_jobs(b.X, jobs, delaunay, threads, progress);
+  b.tets = std::move(f.tets);
+  b.region = std::move(f.region);
+  b.helper_nodes += f.helper_nodes, b.helpers_removed += f.helpers_removed, b.skipped_nodes += f.skipped_nodes, b.flips += f.flips;
   *gen_tets += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -9,7 +9,12 @@
 #include "geom/predicates.hpp"
 
 namespace bisect::tet {
+
+using geom::orient3d;
 namespace {
+
+// The interior nodes nearest the cell's centre tried as the star's centre before a helper.
+constexpr std::size_t kCentreCandidates = 8;
 
 // The star of the boundary from node c: one tetrahedron per boundary triangle; empty when c
 // does not see every triangle from inside.
@@ -22,6 +27,50 @@ std::vector<Tet> star(const std::vector<Vec3>& X, const std::vector<std::array<I
     tets.push_back(m);
   }
   return tets;
+}
+
+// A point that sees every boundary triangle from inside, with a margin, near `start`: cyclic
+// projections onto the triangles' inner half-spaces (each violated one in turn; the kernel is
+// their intersection, convex, so the projections converge when it has an interior). For cells
+// that are star-shaped but not convex, where neither the centroid nor a node near it will do.
+bool kernel_point(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, const Vec3& start, Vec3* out) {
+  std::vector<Vec3> n;
+  std::vector<double> d;
+  double shortest = 1e300;
+  for (const auto& t : boundary) {
+    const Vec3 a = X[t[0]], b = X[t[1]], c = X[t[2]];
+    Vec3 m = (b - a).cross(c - a);  // outward
+    const double len = m.norm();
+    if (!(len > 0)) continue;
+    m /= len;
+    n.push_back(m), d.push_back(m.dot(a));
+    shortest = std::min({shortest, (b - a).norm(), (c - b).norm(), (a - c).norm()});
+  }
+  Vec3 x = start;
+  for (double margin : {0.05 * shortest, 0.01 * shortest, 1e-4 * shortest}) {
+    for (int sweep = 0; sweep < 400; ++sweep) {
+      double worst = 0;
+      for (std::size_t i = 0; i < n.size(); ++i) {
+        const double over = n[i].dot(x) - d[i] + margin;  // > 0: outside the shrunken half-space
+        if (over > 0) {
+          x -= 1.5 * over * n[i];  // over-relaxed projection
+          worst = std::max(worst, over);
+        }
+      }
+      if (worst == 0) break;
+    }
+    bool all = true;
+    for (const auto& t : boundary)
+      if (orient3d(X[t[1]], X[t[0]], X[t[2]], x) <= 0) {
+        all = false;
+        break;
+      }
+    if (all) {
+      *out = x;
+      return true;
+    }
+  }
+  return false;
 }
 
 // Removes the helper node v by collapsing it onto the neighbour that leaves the best
@@ -86,28 +135,53 @@ void brio_order(const std::vector<Vec3>& X, std::vector<Index>& v) {
 
 }  // namespace
 
+bool sees_all(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, const Vec3& p) {
+  for (const auto& t : boundary)
+    if (orient3d(X[t[1]], X[t[0]], X[t[2]], p) <= 0) return false;  // outward triangle seen from inside: reversed
+  return true;
+}
+
+bool star_centre(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, const std::vector<Index>& interior,
+                 const Vec3& centroid, Index* node, Vec3* point) {
+  // a convex cell is seen whole from its nearest node; a star-shaped one (the B-rep route's cells,
+  // whose faces were moved onto curved surfaces) from some node near its middle, or else from a
+  // point of its kernel
+  std::vector<Index> near = interior;
+  const std::size_t k = std::min<std::size_t>(near.size(), kCentreCandidates);
+  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(k), near.end(),
+                    [&](Index a, Index b) { return (X[a] - centroid).squaredNorm() < (X[b] - centroid).squaredNorm(); });
+  for (std::size_t i = 0; i < k; ++i)
+    if (sees_all(X, boundary, X[near[i]])) {
+      *node = near[i];
+      return true;
+    }
+  *node = -1;
+  if (sees_all(X, boundary, centroid)) {
+    *point = centroid;
+    return true;
+  }
+  return kernel_point(X, boundary, centroid, point);
+}
+
 std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
                                   const std::vector<Index>& interior, const Vec3& centroid, bool delaunay, CellFillStats* stats) {
   CellFillStats st;
   // the star's centre: the interior node nearest the centroid, else a helper at the centroid
   std::vector<Index> rest = interior;
   std::sort(rest.begin(), rest.end(), [&](Index a, Index b) { return (X[a] - centroid).squaredNorm() < (X[b] - centroid).squaredNorm(); });
-  std::vector<Tet> tets;
-  Index centre = -1;
-  if (!rest.empty()) {
-    tets = star(X, boundary, rest.front());
-    if (!tets.empty()) {
-      centre = rest.front();
-      rest.erase(rest.begin());
-    }
-  }
-  if (centre < 0) {
-    X.push_back(centroid);
+  Index node = -1;
+  Vec3 point;
+  if (!star_centre(X, boundary, rest, centroid, &node, &point))
+    throw MeshingError("cell fill: neither the centre nor a node near it sees every boundary triangle (the cell is not star-shaped)");
+  Index centre = node;
+  if (node >= 0) {
+    rest.erase(std::find(rest.begin(), rest.end(), node));
+  } else {
+    X.push_back(point);
     centre = static_cast<Index>(X.size() - 1);
-    tets = star(X, boundary, centre);
     st.helper = true;
-    if (tets.empty()) throw MeshingError("cell fill: the centroid does not see every boundary triangle (a cell that is not convex)");
   }
+  std::vector<Tet> tets = star(X, boundary, centre);
   TetComplex cx(X);
   // only the worst tetrahedra (Ω < 0.12 sr) get edge removal here: the global passes see every
   // tetrahedron again with the full threshold, and at half the filling's cost

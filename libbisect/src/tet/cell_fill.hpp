@@ -21,6 +21,15 @@ struct CellFillStats {
   bool helper = false, helper_removed = false;
 };
 
+// Whether p sees every boundary triangle (counter-clockwise from outside) from inside.
+bool sees_all(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, const Vec3& p);
+
+// A centre the whole boundary is seen from: one of the interior nodes nearest the centroid
+// (*node >= 0), else a point (*node = -1 and *point: the centroid, or a point of the cell's
+// kernel found by projections). False when there is none: the cell is not star-shaped.
+bool star_centre(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary, const std::vector<Index>& interior,
+                 const Vec3& centroid, Index* node, Vec3* point);
+
 // X: all nodes (a helper node is appended when needed). boundary: the cell's surface triangles
 // (node ids), counter-clockwise seen from outside the cell. interior: node ids strictly inside.
 // centroid: a point strictly inside (the cell's centroid). delaunay: insert with Delaunay

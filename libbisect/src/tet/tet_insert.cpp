@@ -33,11 +33,17 @@ Index TetComplex::locate(const Vec3& p, Index start) const {
       const int f = static_cast<int>((k + rot) % 4);
       const auto fv = face(t, f);
       if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) > 0) {
-        if (nb[t][f] < 0) return -1;  // outside, across the boundary (the cells are convex)
+        // across the boundary: outside the cell, or (a cell that is star-shaped but not convex)
+        // round a dent in it: only a search of every tetrahedron tells
+        if (nb[t][f] < 0) {
+          step = limit;
+          break;
+        }
         t = nb[t][f];
         moved = true;
       }
     }
+    if (step == limit) break;
     if (!moved) return t;
     rot = rot * 1103515245u + 12345u;
     rot >>= 3;

@@ -29,6 +29,7 @@ const char* to_string(ViolationKind k) {
     case ViolationKind::UnusedNode: return "unused_node";
     case ViolationKind::BadMidNode: return "bad_mid_node";
     case ViolationKind::NonFiniteNode: return "non_finite_node";
+    case ViolationKind::NonPositiveJacobian: return "non_positive_jacobian";
   }
   return "Unknown";
 }
@@ -90,6 +91,7 @@ public:
     check_duplicate_nodes();
     check_unused_nodes();
     if (m_.order == 2) check_mid_nodes();
+    if (m_.order == 2) check_jacobians();
     std::stable_sort(out_.begin(), out_.end(), [](const Violation& x, const Violation& y) {
       if (x.kind != y.kind) return x.kind < y.kind;
       return x.ids < y.ids;
@@ -288,6 +290,26 @@ private:
   }
 
   // Order 2: every tetrahedron around an edge must put the same mid-edge node on it.
+  // Curved (order 2) elements: the Jacobian must stay positive wherever the solver evaluates it,
+  // or CalculiX refuses the mesh.
+  void check_jacobians() {
+    for (std::size_t t = 0; t < nt_; ++t) {
+      if (!well_formed_[t]) continue;
+      bool finite = true;
+      for (int i = 0; i < 10; ++i) finite = finite && finite_[m_.tet_node(t, i)];
+      if (!finite) continue;
+      const Index* v = &m_.tets[t * npt_];
+      // a straight element that is inverted or flat is reported as such already
+      if (geom::orient3d(m_.nodes[v[0]], m_.nodes[v[1]], m_.nodes[v[2]], m_.nodes[v[3]]) <= 0) continue;
+      const double r = tet10_jacobian_ratio(m_, t);
+      if (r > 0) continue;
+      const std::int64_t id = m_.tet_id(t);
+      add(ViolationKind::NonPositiveJacobian, {id},
+          "tetrahedron " + num(id) + " (10 nodes) has a Jacobian determinant of " + std::to_string(r) +
+              " times its straight one's at a corner or Gauss point: " + corners(t));
+    }
+  }
+
   void check_mid_nodes() {
     std::vector<EdgeRecord> edges;
     edges.reserve(6 * nt_);

@@ -1,0 +1,203 @@
+// A TopoDS_Shape as a BrepInput: vertices, edges, faces with their wires and pcurves, solids, all
+// numbered as FreeCAD numbers them.
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "occ_geometry.hpp"
+#include "occ_guard.hpp"
+#include "occ_shape.hpp"
+#include "pcurve_deviation.hpp"
+
+namespace bisect::occ {
+namespace {
+
+bool is_boundary(const TopoDS_Shape& s) {
+  return s.Orientation() == TopAbs_FORWARD || s.Orientation() == TopAbs_REVERSED;
+}
+
+std::string count_of(int n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
+
+// The shape's solids, then its closed shells that no solid holds, made solids (as Gmsh does);
+// open shells are left out (their faces keep their numbers and belong to no solid). A compound
+// may list a solid's shell beside the solid (corpus/x_cube_sphere_cube_compound.brep): that
+// shell is the solid's, not another solid.
+std::vector<TopoDS_Solid> solids_of(const TopoDS_Shape& shape) {
+  std::vector<TopoDS_Solid> out;
+  TopTools_IndexedMapOfShape solids, shells, held;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    out.push_back(TopoDS::Solid(solids(i)));
+    TopExp::MapShapes(solids(i), TopAbs_SHELL, held);
+  }
+  for (TopExp_Explorer ex(shape, TopAbs_SHELL, TopAbs_SOLID); ex.More(); ex.Next())
+    if (!held.Contains(ex.Current())) shells.Add(ex.Current());
+  for (int i = 1; i <= shells.Extent(); ++i) {
+    const TopoDS_Shell& shell = TopoDS::Shell(shells(i));
+    if (!BRep_Tool::IsClosed(shell)) continue;
+    BRepBuilderAPI_MakeSolid make(shell);
+    if (!make.IsDone()) continue;
+    TopoDS_Solid solid = make.Solid();
+    BRepLib::OrientClosedSolid(solid);  // outward normals: a shell may come inside out
+    out.push_back(solid);
+  }
+  return out;
+}
+
+BrepVertex vertex_of(const TopoDS_Vertex& v) {
+  const gp_Pnt p = BRep_Tool::Pnt(v);
+  return BrepVertex{Vec3(p.X(), p.Y(), p.Z()), BRep_Tool::Tolerance(v)};
+}
+
+BrepEdge edge_of(const TopoDS_Edge& e, Index index, const OccShape& m) {
+  const TopoDS_Edge fwd = TopoDS::Edge(e.Oriented(TopAbs_FORWARD));
+  BrepEdge out;
+  TopoDS_Vertex v0, v1;
+  TopExp::Vertices(fwd, v0, v1);  // the forward vertex sits at the first parameter
+  if (v0.IsNull() || v1.IsNull()) throw InputError(edge_name(index) + ": the edge has no vertex at one end");
+  out.v0 = m.vertices.FindIndex(v0) - 1;
+  out.v1 = m.vertices.FindIndex(v1) - 1;
+  out.degenerate = BRep_Tool::Degenerated(fwd);
+  out.tolerance = BRep_Tool::Tolerance(fwd);
+  if (!out.degenerate) out.curve = std::make_shared<OccCurve>(fwd, index);
+  return out;
+}
+
+// The uses of the wire's edges in order along it. BRepTools_WireExplorer orders them by
+// connection (a seam edge comes twice, once per side); on a wire it cannot chain it skips
+// edges, and then the wire's own order is kept.
+std::vector<BrepEdgeUse> wire_of(const TopoDS_Wire& wire, const TopoDS_Face& face, Index fi, const OccShape& m) {
+  std::vector<TopoDS_Edge> order, stored;
+  for (TopoDS_Iterator it(wire); it.More(); it.Next())
+    if (is_boundary(it.Value()) && it.Value().ShapeType() == TopAbs_EDGE) stored.push_back(TopoDS::Edge(it.Value()));
+  for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next())
+    if (is_boundary(ex.Current())) order.push_back(ex.Current());
+  if (order.size() != stored.size()) order = stored;
+  std::vector<BrepEdgeUse> uses;
+  for (const TopoDS_Edge& e : order) {
+    BrepEdgeUse use;
+    use.edge = m.edges.FindIndex(e) - 1;
+    use.reversed = e.Orientation() == TopAbs_REVERSED;
+    use.pcurve = std::make_shared<OccPcurve>(e, face, use.edge, fi);
+    uses.push_back(std::move(use));
+  }
+  return uses;
+}
+
+BrepFace face_of(const TopoDS_Face& f, Index index, bool reversed, const OccShape& m) {
+  // wires and pcurves are read on the forward face: the edges' orientations are then the ones of
+  // the face's own parametrisation (the outer wire counter-clockwise in (u, v))
+  const TopoDS_Face fwd = TopoDS::Face(f.Oriented(TopAbs_FORWARD));
+  auto surface = std::make_shared<OccSurface>(fwd, index);
+  BrepFace out;
+  out.reversed = reversed;
+  out.planar = surface->is_plane();
+  out.tolerance = BRep_Tool::Tolerance(fwd);
+  out.surface = std::move(surface);
+  const TopoDS_Wire outer = BRepTools::OuterWire(fwd);
+  if (outer.IsNull()) throw InputError(face_name(index) + ": the face has no boundary wire");
+  out.wires.push_back(wire_of(outer, fwd, index, m));
+  // inner wires; INTERNAL and EXTERNAL ones (edges embedded in the face) bound nothing
+  for (TopoDS_Iterator it(fwd); it.More(); it.Next())
+    if (it.Value().ShapeType() == TopAbs_WIRE && !it.Value().IsSame(outer) && is_boundary(it.Value()))
+      out.wires.push_back(wire_of(TopoDS::Wire(it.Value()), fwd, index, m));
+  return out;
+}
+
+}  // namespace
+
+BrepInput brep_input_from_shape(const TopoDS_Shape& shape, const std::string& source) {
+  if (shape.IsNull()) throw InputError(source + ": the shape is empty");
+  auto model = std::make_shared<OccShape>();
+  model->shape = shape;
+  model->source = source;
+  OccShape& m = *model;
+  guard([&] { return source; }, "OpenCASCADE could not list the shape's parts", [&] {
+    TopExp::MapShapes(shape, TopAbs_VERTEX, m.vertices);
+    TopExp::MapShapes(shape, TopAbs_EDGE, m.edges);
+    TopExp::MapShapes(shape, TopAbs_FACE, m.faces);
+    m.solids = solids_of(shape);
+  });
+  if (m.solids.empty())
+    throw InputError(source + ": the shape has no solid to mesh (it holds " + count_of(m.faces.Extent(), "face") +
+                     " and no closed shell)");
+
+  BrepInput in;
+  in.source = source;
+  for (int i = 1; i <= m.vertices.Extent(); ++i)
+    in.vertices.push_back(guard([&] { return source + ": " + vertex_name(i - 1); }, "OpenCASCADE could not read it",
+                                [&] { return vertex_of(TopoDS::Vertex(m.vertices(i))); }));
+  for (int i = 1; i <= m.edges.Extent(); ++i)
+    in.edges.push_back(guard([&] { return source + ": " + edge_name(i - 1); }, "OpenCASCADE could not read it",
+                             [&] { return edge_of(TopoDS::Edge(m.edges(i)), i - 1, m); }));
+
+  // A face's orientation is the one it has where the solids first meet it (in the second solid
+  // of an interface it is the opposite); a face of no solid keeps the one it has in the shape.
+  std::vector<signed char> reversed(m.faces.Extent(), -1);
+  in.solids.resize(m.solids.size());
+  guard([&] { return source; }, "OpenCASCADE could not list the solids' faces", [&] {
+    for (size_t s = 0; s < m.solids.size(); ++s) {
+      std::unordered_set<Index> seen;
+      for (TopExp_Explorer ex(m.solids[s], TopAbs_FACE); ex.More(); ex.Next()) {
+        const Index f = m.faces.FindIndex(ex.Current()) - 1;
+        if (f < 0 || !seen.insert(f).second) continue;
+        in.solids[s].faces.push_back(f);
+        if (reversed[f] < 0) reversed[f] = ex.Current().Orientation() == TopAbs_REVERSED;
+      }
+    }
+  });
+  for (int i = 1; i <= m.faces.Extent(); ++i) {
+    const TopoDS_Face& f = TopoDS::Face(m.faces(i));
+    const bool rev = reversed[i - 1] < 0 ? f.Orientation() == TopAbs_REVERSED : reversed[i - 1] > 0;
+    in.faces.push_back(guard([&] { return source + ": " + face_name(i - 1); }, "OpenCASCADE could not read it",
+                             [&] { return face_of(f, i - 1, rev, m); }));
+  }
+
+  // Real CAD understates some edges' tolerances (corpus/wrenchnut.brep: Edge17 declares 1.4e-3
+  // and strays 0.09 from its pcurve near one end), and OpenCASCADE's checker, sampling 23 points,
+  // lets it pass. An edge's tolerance here covers what its pcurves really deviate.
+  for (size_t f = 0; f < in.faces.size(); ++f)
+    for (const auto& wire : in.faces[f].wires)
+      for (const BrepEdgeUse& use : wire) {
+        BrepEdge& edge = in.edges[use.edge];
+        if (edge.degenerate) continue;
+        const double d = pcurve_deviation(*edge.curve, *use.pcurve, *in.faces[f].surface);
+        edge.tolerance = std::max(edge.tolerance, 1.05 * d);
+      }
+
+  // BRepBndLib::Add, not AddOptimal: the optimal box costs Block.brep 0.2 s, more than reading
+  // it; this one may exceed the shape by its tolerances and its B-splines' control points.
+  guard([&] { return source; }, "OpenCASCADE could not take the bounding box", [&] {
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box, Standard_False);
+    if (box.IsVoid()) return;
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    in.bbox_min = Vec3(x0, y0, z0), in.bbox_max = Vec3(x1, y1, z1);
+  });
+  std::shared_ptr<const OccShape> keep = model;
+  in.tessellate = [keep](double linear, double angular) { return tessellate_shape(*keep, linear, angular); };
+  in.shape = keep;
+  return in;
+}
+
+const OccShape& occ_shape_of(const BrepInput& in) {
+  if (!in.shape) throw InputError(in.source + ": the input holds no OpenCASCADE shape (it was not read by libbisect/occ)");
+  return *static_cast<const OccShape*>(in.shape.get());
+}
+
+}  // namespace bisect::occ

@@ -1,0 +1,247 @@
+#include "pipeline/brep_boundary.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bisect/errors.hpp"
+
+namespace bisect::pipeline {
+namespace {
+
+// Barycentric coordinates of p in the triangle (a, b, c), p near its plane (least squares).
+Eigen::Vector3d barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+  Eigen::Matrix<double, 3, 2> M;
+  M.col(0) = b - a, M.col(1) = c - a;
+  const Eigen::Vector2d st = M.colPivHouseholderQr().solve(p - a);
+  return {1 - st.x() - st.y(), st.x(), st.y()};
+}
+
+// The parameter of chord (e, i)'s end node (end 0: nodes[i], 1: nodes[i + 1]).
+double chord_end_param(const BrepInput& in, const BrepProxy& px, Index e, Index i, int end) {
+  const auto& nodes = px.tess.edges[e].nodes;
+  const Index v = nodes[i + end];
+  if (px.tess.node_vertex[v] < 0 && px.tess.node_edge[v] == e) return px.tess.node_t[v];
+  const ParametricCurve& c = *in.edges[e].curve;
+  // a vertex: the edge's first or last parameter (a closed edge starts and ends at it)
+  if (i + end == 0) return c.t_min();
+  if (static_cast<std::size_t>(i + end) + 1 == nodes.size()) return c.t_max();
+  return (c.closest_parameter(px.tess.nodes[v], 0.5 * (c.t_min() + c.t_max())));
+}
+
+}  // namespace
+
+BrepBoundary::BrepBoundary(const BrepInput& input, const BrepProxy& proxy, const PolyhedralModel& m) : in(input), px(proxy), model(m) {
+  pole_.assign(in.vertices.size(), 0);
+  for (const BrepEdge& e : in.edges)
+    if (e.degenerate && e.v0 >= 0) pole_[e.v0] = 1;
+  node_on_.resize(model.nodes.size());
+  for (std::size_t v = 0; v < model.nodes.size(); ++v) node_on_[v] = classify(static_cast<Index>(v));
+}
+
+bool BrepBoundary::on_chord(Index v, Index e, Index i, double* t) const {
+  const auto& nodes = px.tess.edges[e].nodes;
+  const Vec3 &a = model.nodes[nodes[i]], &b = model.nodes[nodes[i + 1]], &p = model.nodes[v];
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (!(len2 > 0)) return false;
+  const double f = (p - a).dot(ab) / len2;
+  if (f < -1e-9 || f > 1 + 1e-9) return false;
+  if ((a + f * ab - p).norm() > 1e-9 * std::sqrt(len2)) return false;
+  const double ta = chord_end_param(in, px, e, i, 0), tb = chord_end_param(in, px, e, i, 1);
+  *t = ta + std::clamp(f, 0.0, 1.0) * (tb - ta);
+  return true;
+}
+
+PointOn BrepBoundary::classify(Index v) const {
+  PointOn on;
+  const std::size_t tess_nodes = px.tess.nodes.size();
+  if (static_cast<std::size_t>(v) < tess_nodes) {
+    if (px.tess.node_vertex[v] >= 0) {
+      on.kind = PointOn::kVertex, on.id = px.tess.node_vertex[v];
+      return on;
+    }
+    if (px.tess.node_edge[v] >= 0) {
+      on.kind = PointOn::kEdge, on.id = px.tess.node_edge[v], on.t = px.tess.node_t[v];
+      for (const auto& c : px.node_chords[v])
+        if (c[0] == on.id) on.chord = c[1];
+      return on;
+    }
+  }
+  Index proxy = -1;
+  for (Index f : model.faces_of_node(v))
+    if (model.faces[f].source >= 0) {
+      proxy = model.faces[f].source;
+      break;
+    }
+  if (proxy < 0) return on;  // only on cut faces: inside the solid
+  on.kind = PointOn::kFace, on.id = px.face_brep[proxy], on.proxy = proxy;
+  if (static_cast<std::size_t>(v) < tess_nodes) return on;
+  // a node the cuts made: on a chord of a B-rep edge, or inside its proxy face
+  std::vector<std::pair<Index, Index>> segments;  // (A, B) proxy-face boundary segments
+  auto add_loop = [&](const std::vector<Index>& loop) {
+    for (std::size_t i = 0; i < loop.size(); ++i) segments.push_back({loop[i], loop[(i + 1) % loop.size()]});
+  };
+  add_loop(px.input.faces[proxy].nodes);
+  if (px.face_tri[proxy] < 0)
+    for (std::size_t h = 0; h < px.input.faces.size(); ++h)
+      if (px.input.faces[h].hole_of == proxy) add_loop(px.input.faces[h].nodes);
+  for (const auto& [A, B] : segments)
+    for (const auto& ca : px.node_chords[A])
+      for (const auto& cb : px.node_chords[B]) {
+        double t = 0;
+        if (ca == cb && on_chord(v, ca[0], ca[1], &t)) {
+          on.kind = PointOn::kEdge, on.id = ca[0], on.chord = ca[1], on.t = t, on.proxy = -1;
+          return on;
+        }
+      }
+  return on;
+}
+
+Vec2 BrepBoundary::uv_on_proxy(Index s, const Vec3& p) const {
+  const Index k = px.face_brep[s];
+  const ParametricSurface& surf = *in.faces[k].surface;
+  if (px.face_tri[s] < 0) return surf.closest_point(p, 0.5 * (surf.uv_min() + surf.uv_max()));
+  const auto& tri = px.tess.faces[k].tris[px.face_tri[s]];
+  std::array<Vec2, 3> uv = px.tess.faces[k].uv[px.face_tri[s]];
+  // a corner at a pole has whatever u the tessellation gave it; the pole's points lie at every u,
+  // so it takes the u of the triangle's other corners (else a point near the pole would get a u
+  // from the far side of it)
+  for (int c = 0; c < 3; ++c) {
+    const Index v = px.tess.node_vertex[tri[c]];
+    if (v >= 0 && pole_[v]) uv[c].x() = 0.5 * (uv[(c + 1) % 3].x() + uv[(c + 2) % 3].x());
+  }
+  const Eigen::Vector3d l = barycentric(model.nodes[tri[0]], model.nodes[tri[1]], model.nodes[tri[2]], p);
+  return l(0) * uv[0] + l(1) * uv[1] + l(2) * uv[2];
+}
+
+Vec3 BrepBoundary::image(const PointOn& on, const Vec3& p) const {
+  switch (on.kind) {
+    case PointOn::kVertex:
+      return in.vertices[on.id].point;
+    case PointOn::kEdge: {
+      const BrepEdge& e = in.edges[on.id];
+      return e.curve ? e.curve->point(on.t) : in.vertices[e.v0].point;
+    }
+    case PointOn::kFace: {
+      // the surface point nearest the proxy point, from its interpolated parameters
+      const ParametricSurface& surf = *in.faces[on.id].surface;
+      return surf.point(surf.closest_point(p, uv_on_proxy(on.proxy, p)));
+    }
+    default:
+      return p;
+  }
+}
+
+PointOn BrepBoundary::edge_on(Index a, Index b) const {
+  PointOn on;
+  // along a chord: both ends on the same chord of one B-rep edge
+  auto chords = [&](Index v) {
+    std::vector<std::array<Index, 2>> c;
+    const PointOn& o = node_on_[v];
+    if (static_cast<std::size_t>(v) < px.tess.nodes.size()) c = px.node_chords[v];
+    else if (o.kind == PointOn::kEdge) c.push_back({o.id, o.chord});
+    return c;
+  };
+  const auto ca = chords(a), cb = chords(b);
+  for (const auto& x : ca)
+    for (const auto& y : cb)
+      if (x == y) {
+        on.kind = PointOn::kEdge, on.id = x[0], on.chord = x[1];
+        return on;
+      }
+  // inside a proxy face: a live face with source >= 0 that has a and b next to each other
+  for (Index f : model.faces_of_node(a)) {
+    const ModelFace& face = model.faces[f];
+    if (face.source < 0) continue;
+    for (const auto& loop : face.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index u = loop[i], w = loop[(i + 1) % loop.size()];
+        if ((u == a && w == b) || (u == b && w == a)) {
+          on.kind = PointOn::kFace, on.id = px.face_brep[face.source], on.proxy = face.source;
+          return on;
+        }
+      }
+  }
+  return on;
+}
+
+void BrepBoundary::discretise_edges(const size::SizeField& h) {
+  nodes = {};
+  edge_nodes.clear();
+  for (std::size_t v = 0; v < model.nodes.size(); ++v) {
+    nodes.p.push_back(model.nodes[v]);
+    nodes.x.push_back(image(node_on_[v], model.nodes[v]));
+    nodes.on.push_back(node_on_[v]);
+  }
+  for (const ModelFace& f : model.faces) {
+    if (!f.alive) continue;
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index a = std::min(loop[i], loop[(i + 1) % loop.size()]), b = std::max(loop[i], loop[(i + 1) % loop.size()]);
+        if (edge_nodes.count({a, b})) continue;
+        auto& inner = edge_nodes[{a, b}];
+        const PointOn along = edge_on(a, b);
+        const Vec3 pa = model.nodes[a], pb = model.nodes[b];
+        // the edge as a curve of s in [0, 1]: its true point, what that point lies on, and its
+        // proxy point
+        double ta = 0, tb = 0;
+        const ParametricCurve* curve = nullptr;
+        if (along.kind == PointOn::kEdge) {
+          curve = in.edges[along.id].curve.get();
+          auto param = [&](Index v) {
+            const PointOn& o = node_on_[v];
+            if (o.kind == PointOn::kEdge && o.id == along.id) return o.t;
+            const auto& en = px.tess.edges[along.id].nodes;  // a vertex: which end of the chord
+            return chord_end_param(in, px, along.id, along.chord, en[along.chord] == v ? 0 : 1);
+          };
+          ta = param(a), tb = param(b);
+        }
+        auto point_at = [&](double s, PointOn* on) -> Vec3 {
+          const Vec3 p = pa + s * (pb - pa);
+          *on = along;
+          if (along.kind == PointOn::kEdge) {
+            on->t = ta + s * (tb - ta);
+            return curve ? curve->point(on->t) : p;
+          }
+          if (along.kind == PointOn::kFace) return image(along, p);
+          return p;
+        };
+        // the number of segments: the integral of ds / h along the true curve, sampled, with
+        // nodes at equal steps of it (graded with h)
+        auto integrate = [&](int m, std::vector<double>* cum) {
+          cum->assign(m + 1, 0.0);
+          PointOn scratch;
+          Vec3 prev = point_at(0, &scratch);
+          for (int j = 1; j <= m; ++j) {
+            const Vec3 cur = point_at(static_cast<double>(j) / m, &scratch);
+            (*cum)[j] = (*cum)[j - 1] + (cur - prev).norm() / h.at(0.5 * (cur + prev));
+            prev = cur;
+          }
+          return cum->back();
+        };
+        std::vector<double> cum;
+        const double rough = integrate(16, &cum);
+        const int m = static_cast<int>(std::clamp(4 * rough, 16.0, 4096.0));
+        const double total = m == 16 ? rough : integrate(m, &cum);
+        const auto more = finer.find({a, b});
+        const int n = std::max(1, static_cast<int>(std::lround(total))) * (more == finer.end() ? 1 : more->second);
+        for (int k = 1; k < n; ++k) {
+          const double target = total * k / n;
+          const int j = static_cast<int>(std::upper_bound(cum.begin(), cum.end(), target) - cum.begin());
+          const int j0 = std::clamp(j - 1, 0, m - 1);
+          const double span = cum[j0 + 1] - cum[j0];
+          const double s = (j0 + (span > 0 ? (target - cum[j0]) / span : 0.5)) / m;
+          PointOn on;
+          const Vec3 x = point_at(s, &on);
+          nodes.p.push_back(pa + s * (pb - pa));
+          nodes.x.push_back(x);
+          nodes.on.push_back(on);
+          inner.push_back(static_cast<Index>(nodes.x.size() - 1));
+        }
+      }
+  }
+}
+
+}  // namespace bisect::pipeline

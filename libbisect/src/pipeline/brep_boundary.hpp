@@ -1,0 +1,78 @@
+// Where the decomposition's model lies on the B-rep (the proxy's cut-up boundary mapped back onto
+// the true geometry), and its edges discretised once by the size field.
+//
+// Every model node and edge of the proxy's decomposition lies on a proxy face (a piece of a
+// B-rep face), on a chord of a B-rep edge, or inside the solid (where cut faces meet). A point
+// of a proxy face maps to its B-rep face through the face's parameters (barycentric in the
+// tessellation triangle's corner parameters; the plane itself for a planar face); a point of a
+// chord maps to its edge's curve at the interpolated parameter; a proxy node that is a B-rep
+// vertex maps to the vertex. That image is where the node goes in the mesh: on its face, edge
+// or vertex exactly (ARCHITECTURE.md §1: every surface node lies on its face).
+#pragma once
+#include <array>
+#include <map>
+#include <vector>
+
+#include "bisect/brep_input.hpp"
+#include "bisect/polyhedral_model.hpp"
+#include "pipeline/brep_proxy.hpp"
+#include "size/size_field.hpp"
+
+namespace bisect::pipeline {
+
+// What a point lies on. kFace: inside B-rep face `id` (its proxy face `proxy` gives the
+// parameters); kEdge: on B-rep edge `id` at parameter t (on the chord `chord` of it); kVertex:
+// B-rep vertex `id`; kInterior: inside a solid.
+struct PointOn {
+  enum Kind : char { kInterior = 0, kFace = 1, kEdge = 2, kVertex = 3 } kind = kInterior;
+  Index id = -1;
+  Index proxy = -1;  // kFace: a proxy face holding it
+  Index chord = -1;  // kEdge: the segment index along tess.edges[id]
+  double t = 0;      // kEdge: the edge parameter
+};
+
+// The mesh's boundary nodes as they come from the model's edges: the proxy position (where the
+// decomposition put it), the true position (its image, or for interior nodes the proxy position
+// until the morph moves it), and what it lies on.
+struct BoundaryNodes {
+  std::vector<Vec3> x;      // true positions
+  std::vector<Vec3> p;      // proxy positions
+  std::vector<PointOn> on;
+};
+
+class BrepBoundary {
+ public:
+  BrepBoundary(const BrepInput& in, const BrepProxy& px, const PolyhedralModel& model);
+
+  const PointOn& node_on(Index v) const { return node_on_[v]; }
+  // The parameters on B-rep face k of the point p lying on proxy face s (s on face k).
+  Vec2 uv_on_proxy(Index s, const Vec3& p) const;
+  // The true point of a proxy point p described by `on` (kInterior: p itself).
+  Vec3 image(const PointOn& on, const Vec3& p) const;
+  // What the model edge (a, b) lies on: kEdge (along a chord of `id`), kFace (inside face `id`,
+  // through proxy face `proxy`), or kInterior (a cut-cut edge).
+  PointOn edge_on(Index a, Index b) const;
+
+  // Every live model edge discretised once by h (ARCHITECTURE.md §1: edges discretised once, by
+  // one size field): model nodes first (ids = model node ids), then each edge's inner nodes.
+  // edge_nodes[(lo, hi)]: the inner nodes from lo to hi.
+  void discretise_edges(const size::SizeField& h);
+  BoundaryNodes nodes;
+  std::map<std::pair<Index, Index>, std::vector<Index>> edge_nodes;
+  // Edges to cut into this many times the segments the size asks for: a face piece whose
+  // boundary chords cross in its chart (two cut lines meeting at a small angle) is meshed again
+  // with its boundary finer.
+  std::map<std::pair<Index, Index>, int> finer;
+
+  const BrepInput& in;
+  const BrepProxy& px;
+  const PolyhedralModel& model;
+
+ private:
+  std::vector<PointOn> node_on_;
+  std::vector<char> pole_;  // per B-rep vertex: the vertex of a degenerate edge (a pole)
+  PointOn classify(Index v) const;
+  bool on_chord(Index v, Index e, Index i, double* t) const;
+};
+
+}  // namespace bisect::pipeline

@@ -1,0 +1,132 @@
+#include "pipeline/brep_cells.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+
+#include "bisect/errors.hpp"
+#include "tet/cell_fill.hpp"
+
+namespace bisect::pipeline {
+namespace {
+
+// A cell that neither its true nor its proxy geometry fills joins at most this many neighbours.
+constexpr int kMaxJoins = 4;
+
+struct Side {
+  Index cell;
+  bool outward;
+};
+
+}  // namespace
+
+std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
+                                    const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
+                                    BrepCellCounts* counts) {
+  const std::size_t n = d.cells.size();
+  const PolyhedralModel& m = d.model;
+  // per cell: its face pieces' triangles (outward) and its cut faces with their two sides
+  std::vector<std::vector<std::array<Index, 3>>> piece_tris(n);
+  for (const FacePiece& piece : g.pieces)
+    for (const auto& t : piece.tris) {
+      piece_tris[piece.cell_out].push_back(t);
+      if (piece.cell_in >= 0) piece_tris[piece.cell_in].push_back({t[0], t[2], t[1]});
+    }
+  std::map<Index, std::vector<Side>> cut_sides;
+  std::vector<std::vector<std::pair<Index, bool>>> cuts(n);
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::size_t k = 0; k < d.cells[c].faces.size(); ++k) {
+      const Index f = d.cells[c].faces[k];
+      if (m.faces[f].source >= 0) continue;
+      cuts[c].push_back({f, d.cells[c].outward[k] != 0});
+      cut_sides[f].push_back({static_cast<Index>(c), d.cells[c].outward[k] != 0});
+    }
+  std::vector<Index> group(n);
+  std::iota(group.begin(), group.end(), 0);
+  std::vector<std::vector<Index>> members(n);
+  for (std::size_t c = 0; c < n; ++c) members[c] = {static_cast<Index>(c)};
+  // The job of a group of cells: the cut faces between two members are left out (their nodes
+  // off the group's boundary go inside).
+  auto job_of = [&](Index root) {
+    const std::vector<Index>& mem = members[root];
+    CellJob job;
+    std::set<Index> inner_cuts;
+    double volume = 0;
+    Vec3 centre = Vec3::Zero();
+    for (Index c : mem) {
+      job.boundary.insert(job.boundary.end(), piece_tris[c].begin(), piece_tris[c].end());
+      job.interior.insert(job.interior.end(), cells[c].interior.begin(), cells[c].interior.end());
+      for (const auto& [f, out] : cuts[c]) {
+        const auto& sides = cut_sides[f];
+        if (sides.size() == 2 && group[sides[0].cell] == root && group[sides[1].cell] == root) {
+          inner_cuts.insert(f);
+          continue;
+        }
+        for (const auto& t : g.cut_tris[f]) job.boundary.push_back(out ? t : std::array<Index, 3>{t[0], t[2], t[1]});
+      }
+      centre += cells[c].volume * cells[c].centre, volume += cells[c].volume;
+    }
+    if (!inner_cuts.empty()) {
+      std::set<Index> on_boundary;
+      for (const auto& t : job.boundary) on_boundary.insert(t.begin(), t.end());
+      std::set<Index> inside;
+      for (Index f : inner_cuts)
+        for (const auto& t : g.cut_tris[f])
+          for (Index v : t)
+            if (!on_boundary.count(v)) inside.insert(v);
+      job.interior.insert(job.interior.end(), inside.begin(), inside.end());
+    }
+    job.centre = volume > 0 ? Vec3(centre / volume) : cells[root].centre;
+    job.centre_p = cells[root].centre_p;
+    job.region = d.cells[root].source_region;
+    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(d.cells[root].source_region);
+    if (mem.size() > 1) job.name += " (joined with " + std::to_string(mem.size() - 1) + " neighbour" + (mem.size() > 2 ? "s)" : ")");
+    return job;
+  };
+  auto star = [&](const CellJob& job) {
+    Index node;
+    Vec3 point;
+    return tet::star_centre(X, job.boundary, job.interior, job.centre, &node, &point);
+  };
+  *counts = {};
+  for (std::size_t c = 0; c < n; ++c) {
+    if (group[c] != static_cast<Index>(c)) continue;
+    for (int joins = 0;; ++joins) {
+      const Index root = group[c];
+      CellJob job = job_of(root);
+      if (star(job)) break;
+      if (members[root].size() == 1) {
+        // convex in the proxy: filled there and untangled, when the untangling succeeds
+        job.in_proxy = true;
+        if (fill_job_works(job, X, &P, delaunay)) break;
+      }
+      if (joins >= kMaxJoins)
+        throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and its proxy's filling "
+                                      "cannot be untangled (the cell is narrower than the curved face's bulge next to it)");
+      // the neighbour across the group's largest cut face to the outside
+      Index best = -1;
+      std::size_t most = 0;
+      for (Index mc : members[root])
+        for (const auto& [f, out] : cuts[mc])
+          for (const Side& s : cut_sides[f])
+            if (group[s.cell] != root && (best < 0 || g.cut_tris[f].size() > most)) most = g.cut_tris[f].size(), best = s.cell;
+      if (best < 0) throw MeshingError(job.name + ": no point sees its whole boundary, and it has no neighbour to join");
+      const Index other = group[best];
+      for (Index k : members[other]) group[k] = root;
+      members[root].insert(members[root].end(), members[other].begin(), members[other].end());
+      members[other].clear();
+      ++counts->joined;
+    }
+  }
+  std::vector<CellJob> jobs;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (group[c] != static_cast<Index>(c)) continue;
+    jobs.push_back(job_of(static_cast<Index>(c)));
+    if (members[c].size() == 1 && !star(jobs.back())) jobs.back().in_proxy = true, ++counts->in_proxy;
+  }
+  return jobs;
+}
+
+}  // namespace bisect::pipeline

@@ -1,0 +1,35 @@
+// The B-rep route's cells as the cell fill takes them. A convex cell of the proxy whose faces
+// moved onto the true surfaces is star-shaped when it is wide against the surfaces' bulge, and is
+// filled as it is; a narrow one beside a concave face (a sliver between two cuts next to a hole)
+// may not be: it is filled in the proxy's geometry, where it is convex (proxy_fill.hpp), when
+// the tetrahedra made there can be untangled on the true geometry; otherwise it is joined with
+// its neighbours across cut faces (a few at most) until a point sees the group whole.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "bisect/polyhedral_model.hpp"
+#include "pipeline/brep_grids.hpp"
+#include "pipeline/cell_filling.hpp"
+
+namespace bisect::pipeline {
+
+struct BrepCell {
+  std::vector<Index> interior;  // node ids inside it
+  Vec3 centre = Vec3::Zero();   // its centroid, moved onto the true geometry
+  Vec3 centre_p = Vec3::Zero(); // its centroid in the proxy
+  double volume = 0;            // of the proxy cell
+};
+
+struct BrepCellCounts {
+  std::int64_t in_proxy = 0;  // cells filled in the proxy's geometry
+  std::int64_t joined = 0;    // cells joined with a neighbour
+};
+
+// One job per cell or group of joined cells. X, P: the nodes' true and proxy positions. Throws
+// MeshingError naming the cell when none of the three ways works.
+std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
+                                    const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
+                                    BrepCellCounts* counts);
+
+}  // namespace bisect::pipeline

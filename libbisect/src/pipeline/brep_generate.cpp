@@ -1,0 +1,218 @@
+// The B-rep route's stage sequence (ARCHITECTURE.md §1): the proxy and its convex decomposition,
+// the size field, the surface grids on the true surfaces with the cut lines in them, the morph of
+// the cut faces and interior nodes onto the true geometry, the cell fill, the global
+// optimisation, the mesh assembly and, for order 2, the curved mid-nodes.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <unordered_set>
+
+#include "bisect/errors.hpp"
+#include "bisect/generate.hpp"
+#include "geom/predicates.hpp"
+#include "optimize/optimize_mesh.hpp"
+#include "pipeline/brep_boundary.hpp"
+#include "pipeline/brep_closure.hpp"
+#include "pipeline/brep_placement.hpp"
+#include "pipeline/brep_grids.hpp"
+#include "pipeline/brep_order2.hpp"
+#include "pipeline/brep_proxy.hpp"
+#include "pipeline/cell_filling.hpp"
+#include "pipeline/node_placement.hpp"
+#include "size/brep_sizes.hpp"
+
+namespace bisect {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The proxy's angular deflection: about twice the angle the curvature bound gives an element,
+// between 25 and 60 degrees. Coarser than the elements, so that a concave face's facets (each
+// its own cell side) are no narrower than an element; fine enough that a cell whose faces move
+// onto the true surface stays star-shaped.
+double proxy_angle(const SizeOptions& o) {
+  const double element = o.curvature_elements > 0 ? 2 * M_PI / o.curvature_elements : M_PI / 3;
+  return std::clamp(2 * element, 25 * M_PI / 180, 60 * M_PI / 180);
+}
+
+// The proxy and its decomposition. A proxy whose facets cross (a thin wall between two curved
+// faces tessellated coarsely) is made again finer, up to three times.
+struct Decomposed {
+  pipeline::BrepProxy proxy;
+  Decomposition d;
+};
+Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, double angle, const std::function<bool(double)>& progress) {
+  const double diag = (in.bbox_max - in.bbox_min).norm();
+  double linear = 0.05 * diag;
+  for (int attempt = 0;; ++attempt) {
+    Decomposed out;
+    out.proxy = pipeline::make_proxy(in, linear, angle);
+    DecomposeOptions dopt = opt.decompose;
+    if (progress) dopt.progress = progress;
+    // A proxy edge is reflex only when it turns in by more than a degree: a tessellation's fans
+    // round a sphere's pole are convex on the true surface but lie flat to round-off, and cuts
+    // through them (the thesis's tolerance is a thousandth of a degree) leave slivers at the pole.
+    // A cell a degree short of convex is still seen whole from inside.
+    dopt.reflex_tol_deg = std::max(dopt.reflex_tol_deg, 1.0);
+    try {
+      out.d = decompose(out.proxy.input, dopt);
+      return out;
+    } catch (const InputError& e) {
+      // the proxy's own fault (its coarse facets meet): finer; the shape's fault shows again
+      if (attempt >= 3) throw InputError(in.source + ": the shape's tessellation is not a valid solid even at an angular deflection of " +
+                                         std::to_string(angle * 180 / M_PI) + " degrees (" + e.what() + ")");
+      angle *= 0.5, linear *= 0.5;
+    }
+  }
+}
+
+}  // namespace
+
+TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, GenerateStats* stats) {
+  const auto t_all = Clock::now();
+  GenerateStats st;
+  if (opt.order != 1 && opt.order != 2) throw InputError("element order " + std::to_string(opt.order) + ": give 1 (4-node) or 2 (10-node tetrahedra)");
+  if (in.solids.empty()) throw InputError(in.source + ": the shape has no solid to mesh");
+  if (opt.sizing.size <= 0 && opt.sizing.elements <= 0) throw InputError(in.source + ": give a number of elements or an element size");
+  pipeline::check_solids_closed(in);
+  double shown = 0;
+  std::function<bool(double)> progress;
+  if (opt.progress)
+    progress = [&](double x) {
+      shown = std::max(shown, x);
+      return opt.progress(shown);
+    };
+  const double want = static_cast<double>(opt.sizing.elements);
+  const double diag = (in.bbox_max - in.bbox_min).norm();
+  size::BrepSizeReport sizes;
+  pipeline::BrepPlacement best;
+  pipeline::FilledCells filled;
+  // A cell narrower than the true surface's bulge over the proxy's facets may not be star-shaped
+  // even joined with its neighbours (brep_cells.hpp): the whole route then runs again on a finer
+  // proxy, whose facets bulge less.
+  const double first_angle = proxy_angle(opt.sizing);
+  for (int attempt = 0;; ++attempt) {
+    const double angle = first_angle / (1 + attempt);
+    try {
+    const auto t_dec = Clock::now();
+    std::function<bool(double)> dec_progress;
+    if (progress) dec_progress = [&](double x) { return progress(0.1 * x); };
+    const Decomposed dc = decompose_brep(in, opt, angle, dec_progress);
+    st.init_geom = dc.d.stats.prepare_seconds;
+    st.bisect = since(t_dec) - st.init_geom;
+    st.convex_cells = static_cast<std::int64_t>(dc.d.cells.size());
+    st.regions = static_cast<std::int64_t>(in.solids.size());
+    double volume = 0;
+    for (const ConvexCell& c : dc.d.cells) volume += pipeline::cell_polytope(dc.d.model, c).volume();
+    const double want = static_cast<double>(opt.sizing.elements);
+    // The count (6.11): the spacing is searched on the count the nodes predict before any filling
+    // (pipeline/count_calibration.hpp's rule: 6.2 tetrahedra per node inside, 2.65 per node on the
+    // boundary), the cells are filled, and when the count still misses R by more than 10% the
+    // filling's own ratio corrects the prediction and the search runs again (at most two fillings).
+    double scale = 1, np = opt.sizing.size > 0 ? opt.sizing.size : nominal_spacing(volume, want);
+    double best_miss = 1e300;
+    for (int filling = 0; filling < 2; ++filling) {
+      pipeline::BrepPlacement placed;
+      double placed_miss = 1e300, placed_np = np, last_predicted = 0, last_np = 0;
+      for (int round = 0; round < 6; ++round) {
+        const auto t_nodes = Clock::now();
+        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes);
+        pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads);
+        st.gen_nodes += since(t_nodes);
+        if (progress && !progress(0.35)) throw Cancelled();
+        const double predicted = scale * (6.2 * static_cast<double>(trial.inside_nodes()) + 2.65 * static_cast<double>(trial.boundary_nodes()));
+        const double miss = std::abs(predicted - want);
+        if (miss < placed_miss) placed_miss = miss, placed = std::move(trial), placed_np = np;
+        if (opt.sizing.size > 0 || miss <= 0.05 * want) break;
+        // past the floor (the curvature bound and the smallest features keep the count up):
+        // a coarser base no longer lowers it, and the search stops there
+        if (predicted > want && last_predicted > 0 && np > last_np && predicted > 0.95 * last_predicted) break;
+        last_predicted = predicted, last_np = np;
+        const double next = std::min(np * std::cbrt(predicted / want), diag);
+        if (std::abs(next / np - 1) < 0.01) break;
+        np = next;
+      }
+      np = placed_np;
+      const auto t_fill = Clock::now();
+      std::function<bool(double)> fill_progress;
+      if (progress) fill_progress = [&](double x) { return progress(0.35 + 0.45 * x); };
+      std::vector<Vec3> X = placed.X;
+      pipeline::BrepCellCounts cell_counts;
+      const std::vector<pipeline::CellJob> jobs =
+          pipeline::brep_cell_jobs(dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, &cell_counts);
+      pipeline::FilledCells cells = pipeline::fill_cell_jobs(X, jobs, opt.delaunay_insertion, opt.threads, fill_progress, &placed.P);
+      st.gen_tets += since(t_fill);
+      ++st.fillings;
+      const double count = static_cast<double>(cells.tets.size());
+      const double miss = std::abs(count - want);
+      const double predicted_raw = 6.2 * static_cast<double>(placed.inside_nodes()) + 2.65 * static_cast<double>(placed.boundary_nodes());
+      if (miss < best_miss) {
+        best_miss = miss, filled = std::move(cells), st.spacing = np;
+        best = std::move(placed);
+        st.proxy_cells = cell_counts.in_proxy, st.joined_cells = cell_counts.joined;
+        best.X = std::move(X);
+      }
+      if (opt.sizing.size > 0 || best_miss <= 0.1 * want) break;
+      scale = count / predicted_raw;
+      np *= std::cbrt(count / want);
+    }
+      break;
+    } catch (const MeshingError& e) {
+      if (attempt >= 2) throw;
+      const double total = st.total;
+      st = GenerateStats{};
+      st.total = total;
+      best = {}, filled = {};
+    }
+  }
+  best.on_boundary.resize(best.X.size(), 0);  // helpers the cells kept are inside
+  st.graded_nodes = best.graded_nodes;
+  st.helper_nodes = filled.helper_nodes, st.helpers_removed = filled.helpers_removed;
+  st.skipped_nodes = filled.skipped_nodes, st.flips = filled.flips;
+  st.surface_min_angle = best.grids.min_angle_deg;
+  // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
+  const auto t_opt = Clock::now();
+  tet::TetComplex cx(best.X);
+  cx.build(std::move(filled.tets), std::move(filled.region));
+  std::unordered_set<tet::FaceKey, tet::FaceKeyHash> held;
+  for (const pipeline::FacePiece& piece : best.grids.pieces)
+    for (const auto& t : piece.tris) {
+      held.insert(tet::face_key(t[0], t[1], t[2]));
+      if (piece.cell_in < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
+    }
+  cx.constrain(held);
+  cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
+  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best.X, best.on_boundary, opt.optimize);
+  st.flips += oc.flips;
+  st.sliver_moves = oc.sliver_moves;
+  st.optimize = since(t_opt);
+  if (progress && !progress(0.97)) throw Cancelled();
+  TetMesh out = pipeline::assemble_brep_mesh(best.grids, cx, best.X, in, opt.order, &st.straightened_edges);
+  // no mesh leaves inside out: a stage's slip is an error naming the place, not a bad mesh
+  for (std::size_t t = 0; t < out.num_tets(); ++t) {
+    const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
+               &d = out.nodes[out.tet_node(t, 3)];
+    if (geom::orient3d(a, b, c, d) <= 0) {
+      const Vec3 m = (a + b + c + d) / 4;
+      throw MeshingError(in.source + ": " + solid_name(out.region[t]) + ": a tetrahedron at (" + std::to_string(m.x()) + ", " +
+                         std::to_string(m.y()) + ", " + std::to_string(m.z()) + ") came out inside out (a defect of the mesher)");
+    }
+  }
+  if (progress && !progress(1.0)) throw Cancelled();
+  if (opt.sizing.size <= 0 && static_cast<double>(out.num_tets()) > 1.2 * want) {
+    // more than R asked: the curvature bound or the smallest B-rep edges set the floor
+    st.count_floor = static_cast<std::int64_t>(out.num_tets());
+    st.count_floor_reason = sizes.smallest_edge > 0 && (sizes.smallest_curvature_size <= 0 || sizes.smallest_edge < sizes.smallest_curvature_size)
+                                ? "features: B-rep edges down to " + std::to_string(sizes.smallest_edge)
+                                : "curvature: elements down to " + std::to_string(sizes.smallest_curvature_size) + " on curved faces";
+  }
+  st.nodes = static_cast<std::int64_t>(out.nodes.size());
+  st.tets = static_cast<std::int64_t>(out.num_tets());
+  st.total = since(t_all);
+  if (stats) *stats = st;
+  return out;
+}
+
+}  // namespace bisect

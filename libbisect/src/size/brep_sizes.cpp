@@ -1,0 +1,139 @@
+#include "size/brep_sizes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bisect/errors.hpp"
+
+namespace bisect::size {
+namespace {
+
+constexpr int kSubdivide = 4;  // a tessellation triangle gives (k + 1)(k + 2) / 2 samples
+
+void check_options(const BrepInput& in, const SizeOptions& o) {
+  auto bad = [](const std::string& what, double v) {
+    return InputError(what + " must be a positive number or 0 (got " + std::to_string(v) + ")");
+  };
+  if (!(o.min_size >= 0) || !std::isfinite(o.min_size)) throw bad("min_size", o.min_size);
+  if (!(o.max_size >= 0) || !std::isfinite(o.max_size)) throw bad("max_size", o.max_size);
+  if (!(o.curvature_elements >= 0) || !std::isfinite(o.curvature_elements)) throw bad("curvature_elements", o.curvature_elements);
+  if (o.curvature_elements > 0 && o.curvature_elements < 3)
+    throw InputError("curvature_elements: give at least 3 elements per full turn, or 0 for no bound (got " + std::to_string(o.curvature_elements) + ")");
+  if (!(o.chord_deviation >= 0) || !std::isfinite(o.chord_deviation)) throw bad("chord_deviation", o.chord_deviation);
+  if (!(o.size_grading > 0) || !std::isfinite(o.size_grading)) throw InputError("size_grading must be positive (got " + std::to_string(o.size_grading) + ")");
+  for (std::size_t r = 0; r < o.regions.size(); ++r) {
+    const SizeRegion& g = o.regions[r];
+    const std::string name = "mesh region " + std::to_string(r + 1);
+    if (!(g.size > 0) || !std::isfinite(g.size)) throw InputError(name + ": its size must be positive (got " + std::to_string(g.size) + ")");
+    auto check = [&](const std::vector<Index>& ids, std::size_t n, const char* what) {
+      for (Index i : ids)
+        if (i < 0 || static_cast<std::size_t>(i) >= n)
+          throw InputError(name + ": " + what + std::to_string(i + 1) + " is not in the shape (it has " + std::to_string(n) + ")");
+    };
+    check(g.faces, in.faces.size(), "Face");
+    check(g.edges, in.edges.size(), "Edge");
+    check(g.vertices, in.vertices.size(), "Vertex");
+    check(g.solids, in.solids.size(), "Solid");
+  }
+}
+
+}  // namespace
+
+double curvature_size(double kappa, const SizeOptions& o, double none) {
+  if (!(kappa > 0)) return none;
+  double s = none;
+  if (o.curvature_elements > 0) s = std::min(s, 2 * M_PI / o.curvature_elements / kappa);
+  // a chord of length s on a circle of radius r has sagitta r - sqrt(r^2 - s^2 / 4) ~ s^2 / (8 r)
+  if (o.chord_deviation > 0) s = std::min(s, std::sqrt(8 * o.chord_deviation / kappa));
+  return s;
+}
+
+SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o, BrepSizeReport* report) {
+  check_options(in, o);
+  BrepSizeReport rep;
+  // A floor under every size even without min_size: a cone's apex or a pole has unbounded
+  // curvature, and the curvature bound would ask for ever smaller elements towards it. A
+  // thousandth of the shape's diagonal keeps the finest element to a size a FEM model can use
+  // (min_size, when given and larger, rules).
+  const double diag = (in.bbox_max - in.bbox_min).norm();
+  SizeField field(base, o.size_grading, std::max(o.min_size, std::min(1e-3 * diag, 0.5 * base)), o.max_size);
+  auto add = [&](const Vec3& p, double s, std::size_t* counter) {
+    if (s < field.base()) {
+      field.add(p, s);
+      ++*counter;
+    }
+  };
+  std::vector<double> face_region(in.faces.size(), 0), edge_region(in.edges.size(), 0);
+  for (const SizeRegion& g : o.regions) {
+    auto take = [&](std::vector<double>& v, Index i) { v[i] = v[i] > 0 ? std::min(v[i], g.size) : g.size; };
+    for (Index f : g.faces) take(face_region, f);
+    for (Index e : g.edges) take(edge_region, e);
+    for (Index v : g.vertices) add(in.vertices[v].point, g.size, &rep.region_sources);
+    for (Index s : g.solids)
+      for (Index f : in.solids[s].faces) take(face_region, f);
+  }
+  // faces: curvature at samples of every tessellation triangle (planar faces have none), and
+  // region sizes
+  for (std::size_t f = 0; f < in.faces.size() && f < tess.faces.size(); ++f) {
+    const BrepFace& face = in.faces[f];
+    const auto& tf = tess.faces[f];
+    const bool curved = !face.planar && (o.curvature_elements > 0 || o.chord_deviation > 0);
+    if (!curved && face_region[f] <= 0) continue;
+    for (std::size_t t = 0; t < tf.tris.size(); ++t) {
+      const auto& uv = tf.uv[t];
+      for (int i = 0; i <= kSubdivide; ++i)
+        for (int j = 0; i + j <= kSubdivide; ++j) {
+          const double a = static_cast<double>(i) / kSubdivide, b = static_cast<double>(j) / kSubdivide;
+          const Vec2 q = (1 - a - b) * uv[0] + a * uv[1] + b * uv[2];
+          const Vec3 x = face.surface->point(q);
+          if (face_region[f] > 0) add(x, face_region[f], &rep.region_sources);
+          if (!curved) continue;
+          const double s = curvature_size(face.surface->max_curvature(q), o, field.base());
+          if (s < field.base()) {
+            add(x, s, &rep.curvature_sources);
+            rep.smallest_curvature_size = rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s;
+          }
+        }
+    }
+  }
+  // edges: curvature along the curve, the edge's own length when it is shorter than the base
+  // (at least one element along it), and region sizes; samples a fraction of a size apart
+  for (std::size_t e = 0; e < in.edges.size(); ++e) {
+    const BrepEdge& edge = in.edges[e];
+    if (edge.degenerate || !edge.curve) continue;
+    const ParametricCurve& c = *edge.curve;
+    constexpr int kProbe = 32;
+    double length = 0;
+    Vec3 prev = c.point(c.t_min());
+    for (int i = 1; i <= kProbe; ++i) {
+      const Vec3 cur = c.point(c.t_min() + (c.t_max() - c.t_min()) * i / kProbe);
+      length += (cur - prev).norm();
+      prev = cur;
+    }
+    if (!(length > 0)) continue;
+    const double own = length < field.base() ? length : field.base();
+    if (own < field.base()) rep.smallest_edge = rep.smallest_edge > 0 ? std::min(rep.smallest_edge, length) : length;
+    // sample spacing: a quarter of the smallest size met along a coarse probe
+    double finest = std::min(own, edge_region[e] > 0 ? edge_region[e] : field.base());
+    for (int i = 0; i <= kProbe; ++i)
+      finest = std::min(finest, curvature_size(c.curvature(c.t_min() + (c.t_max() - c.t_min()) * i / kProbe), o, field.base()));
+    const int n = static_cast<int>(std::clamp(std::ceil(4 * length / finest), 2.0, 20000.0));
+    for (int i = 0; i <= n; ++i) {
+      const double t = c.t_min() + (c.t_max() - c.t_min()) * i / n;
+      const Vec3 x = c.point(t);
+      add(x, own, &rep.edge_sources);
+      if (edge_region[e] > 0) add(x, edge_region[e], &rep.region_sources);
+      const double s = curvature_size(c.curvature(t), o, field.base());
+      if (s < field.base()) {
+        add(x, s, &rep.curvature_sources);
+        rep.smallest_curvature_size = rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s;
+      }
+    }
+  }
+  field.finish();
+  if (report) *report = rep;
+  return field;
+}
+
+}  // namespace bisect::size

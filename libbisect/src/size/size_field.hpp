@@ -1,0 +1,54 @@
+// The element size every stage of the B-rep route reads (ARCHITECTURE.md §1): one function
+//
+//     h(x) = clamp(min(base, min over sources i of s_i + g |x - p_i|), min_size, max_size)
+//
+// where `base` is the spacing from R or the absolute size (thesis 6.11), the sources are points
+// that ask for a smaller size (curvature, short B-rep edges, the resolution hints, mesh
+// regions), and g bounds the growth per unit of distance, so neighbouring elements never differ
+// by more than the grading allows: no fans and no strips where a fine feature meets coarse
+// elements. h is 1-Lipschitz times g wherever it is below base, by construction.
+//
+// Sources are kept in a bounding-volume tree with each node's smallest s, so a query visits the
+// few nodes whose lower bound s_min + g dist(x, box) can beat the best found so far.
+#pragma once
+#include <vector>
+
+#include "bisect/types.hpp"
+
+namespace bisect::size {
+
+struct SizeSource {
+  Vec3 p;
+  double s;
+};
+
+class SizeField {
+ public:
+  // base > 0; grading > 0; min_size / max_size: 0 for none.
+  SizeField(double base, double grading, double min_size = 0, double max_size = 0);
+
+  // Sources asking for at least base (after clamping) are dropped; call finish() before at().
+  void add(const Vec3& p, double s);
+  void finish();
+
+  double at(const Vec3& x) const;
+  double base() const { return base_; }
+  double grading() const { return g_; }
+  double smallest() const;  // the smallest size anywhere (a source's, or base)
+  std::size_t sources() const { return src_.size(); }
+
+ private:
+  struct Node {
+    Vec3 lo, hi;
+    double s_min;
+    int first, count;   // leaf: sources [first, first + count)
+    int left, right;    // inner node: children (-1 for a leaf)
+  };
+  double base_, g_, lo_, hi_;
+  std::vector<SizeSource> src_;
+  std::vector<Node> tree_;
+  bool built_ = false;
+  int build(int first, int count);
+};
+
+}  // namespace bisect::size

@@ -1,0 +1,43 @@
+// What the OpenCASCADE adapter's tests check on every shape, built in a test or read from
+// ../shared: the BrepInput's geometry against itself and OpenCASCADE, and a tessellation against
+// BrepChecker.
+#pragma once
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+
+#include "bisect/brep_input.hpp"
+#include "bisect/occ_checker.hpp"
+
+namespace bisect::test {
+
+// The adapter's BrepInput of a shape built in a test.
+BrepInput input_of(const TopoDS_Shape& shape, const std::string& name = "test shape");
+
+// A length against which round-off is measured: the bounding box's diagonal.
+double size_of(const BrepInput& in);
+
+// Along every edge use: the surface at the pcurve's (u, v) is the edge's point within the
+// tolerances; consecutive uses of a wire share their vertex and meet in (u, v). Returns the
+// largest gap seen (model units).
+double check_wires(const BrepInput& in);
+
+// closest_point / closest_parameter return the point they were given (3D round trip), and a
+// point off the surface comes back no farther than it went.
+void check_closest_points(const BrepInput& in);
+
+struct TessellationReport {
+  size_t nodes = 0, triangles = 0;
+  size_t nodes_checked = 0;  // against BrepChecker
+  double worst_node_distance = 0;  // from its vertex, edge or face, over the entity's tolerance
+  double worst_volume_error = 0;   // relative, over the solids
+};
+
+// Closed per solid with consistent orientation (every directed triangle side once each way),
+// counter-clockwise in (u, v), each corner's (u, v) on its node, every node (up to max_checked
+// of them, evenly spread) on its vertex, edge or face, volumes within `volume_tolerance` of
+// BRepGProp's.
+TessellationReport check_tessellation(const BrepInput& in, const BrepTessellation& t, const BrepChecker& checker,
+                                      double volume_tolerance, size_t max_checked = 2000);
+
+}  // namespace bisect::test

@@ -1,0 +1,86 @@
+#include "occ_shapes.hpp"
+
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_CompSolid.hxx>
+#include <gp_Ax2.hxx>
+
+#include <stdexcept>
+
+namespace bisect::test {
+
+TopoDS_Shape make_box() { return BRepPrimAPI_MakeBox(1, 2, 3).Shape(); }
+
+TopoDS_Shape make_cylinder() { return BRepPrimAPI_MakeCylinder(1, 2).Shape(); }
+
+TopoDS_Shape make_sphere() { return BRepPrimAPI_MakeSphere(2).Shape(); }
+
+TopoDS_Shape make_box_minus_cylinder() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 4, 2).Shape();
+  const TopoDS_Shape cyl = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(2, 2, -1), gp_Dir(0, 0, 1)), 1, 4).Shape();
+  BRepAlgoAPI_Cut cut(box, cyl);
+  if (!cut.IsDone()) throw std::runtime_error("box minus cylinder failed");
+  return cut.Shape();
+}
+
+TopoDS_Shape make_two_box_compsolid() {
+  TopTools_ListOfShape args;
+  args.Append(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 1, 1, 1).Shape());
+  args.Append(BRepPrimAPI_MakeBox(gp_Pnt(1, 0, 0), 1, 1, 1).Shape());
+  BRepAlgoAPI_BuilderAlgo fuse;  // general fuse: the touching faces become one shared face
+  fuse.SetArguments(args);
+  fuse.Build();
+  if (!fuse.IsDone()) throw std::runtime_error("general fuse of two boxes failed");
+  TopoDS_CompSolid cs;
+  BRep_Builder b;
+  b.MakeCompSolid(cs);
+  for (TopExp_Explorer ex(fuse.Shape(), TopAbs_SOLID); ex.More(); ex.Next()) b.Add(cs, ex.Current());
+  return cs;
+}
+
+TopoDS_Shape make_box_with_cavity() {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 4, 4).Shape();
+  const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(gp_Pnt(2, 2, 2), 1).Shape();
+  BRepAlgoAPI_Cut cut(box, ball);
+  if (!cut.IsDone()) throw std::runtime_error("box minus ball failed");
+  return cut.Shape();
+}
+
+TopoDS_Shape make_nurbs_part() {
+  BRepBuilderAPI_NurbsConvert convert(make_box_minus_cylinder());
+  return convert.Shape();
+}
+
+TopoDS_Shape make_revolved_bspline() {
+  TColgp_Array1OfPnt pts(1, 5);
+  pts(1) = gp_Pnt(1, 0, 0);
+  pts(2) = gp_Pnt(1.4, 0, 0.5);
+  pts(3) = gp_Pnt(1.2, 0, 1.0);
+  pts(4) = gp_Pnt(1.5, 0, 1.5);
+  pts(5) = gp_Pnt(1, 0, 2);
+  const Handle(Geom_BSplineCurve) profile = GeomAPI_PointsToBSpline(pts).Curve();
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(profile).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(1, 0, 2), gp_Pnt(0.5, 0, 2)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.5, 0, 2), gp_Pnt(0.5, 0, 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.5, 0, 0), gp_Pnt(1, 0, 0)).Edge());
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(wire.Wire(), true).Face();
+  return BRepPrimAPI_MakeRevol(face, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), M_PI).Shape();
+}
+
+}  // namespace bisect::test

@@ -1,0 +1,29 @@
+// Shapes the OpenCASCADE adapter's tests build with OpenCASCADE's own modelling (BRepPrimAPI,
+// booleans, NURBS conversion), with what is known of them in closed form.
+#pragma once
+#include <TopoDS_Shape.hxx>
+
+#include <cmath>
+
+namespace bisect::test {
+
+// [0,1] x [0,2] x [0,3]: 6 planar faces, 12 edges, 8 vertices; volume 6
+TopoDS_Shape make_box();
+// radius 1, height 2 on the z axis: a lateral face with a seam edge, two discs; volume 2 pi
+TopoDS_Shape make_cylinder();
+// radius 2 at the origin: one face, one seam edge and two degenerate pole edges; volume 32 pi / 3
+TopoDS_Shape make_sphere();
+// the box [0,4] x [0,4] x [0,2] minus a cylinder of radius 1 through it on (2, 2, z): volume 32 - 2 pi
+TopoDS_Shape make_box_minus_cylinder();
+// the boxes [0,1]^3 and [1,2] x [0,1] x [0,1] as a CompSolid sharing the face x = 1 (general fuse)
+TopoDS_Shape make_two_box_compsolid();
+// the box [0,4]^3 with a spherical cavity of radius 1 at its centre: one solid, two shells;
+// volume 64 - 4 pi / 3
+TopoDS_Shape make_box_with_cavity();
+// make_box_minus_cylinder with every surface and curve converted to B-splines
+TopoDS_Shape make_nurbs_part();
+// a B-spline profile revolved half a turn about the z axis: surfaces of revolution over a
+// B-spline curve (whose adaptors nest a curve adaptor with its own cache)
+TopoDS_Shape make_revolved_bspline();
+
+}  // namespace bisect::test

@@ -1,0 +1,218 @@
+// The region mesher on analytic surfaces: coverage of the region in (u, v), every node on the
+// surface, sizes that follow the size function in 3D, angles, holes, strongly distorted
+// parametrisations, a sphere's poles, and bad loops refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <map>
+
+#include "bisect/errors.hpp"
+#include "geom/predicates.hpp"
+#include "surface/analytic_surfaces.hpp"
+#include "surface/region_mesher.hpp"
+
+namespace bisect::surface {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A loop round the rectangle [u0, u1] x [v0, v1] in (u, v), n nodes per side, counter-clockwise
+// (or clockwise for a hole), appended to b.
+void rectangle(const ParametricSurface& s, RegionBoundary& b, Vec2 lo, Vec2 hi, int n, bool hole = false) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < n; ++i) pts.push_back({lo.x() + (hi.x() - lo.x()) * i / n, lo.y()});
+  for (int i = 0; i < n; ++i) pts.push_back({hi.x(), lo.y() + (hi.y() - lo.y()) * i / n});
+  for (int i = 0; i < n; ++i) pts.push_back({hi.x() - (hi.x() - lo.x()) * i / n, hi.y()});
+  for (int i = 0; i < n; ++i) pts.push_back({lo.x(), hi.y() - (hi.y() - lo.y()) * i / n});
+  if (hole) std::reverse(pts.begin(), pts.end());
+  std::vector<Index> loop;
+  for (const Vec2& p : pts) {
+    loop.push_back(static_cast<Index>(b.uv.size()));
+    b.uv.push_back(p);
+    b.xyz.push_back(s.point(p));
+  }
+  b.loops.push_back(loop);
+}
+
+struct Figures {
+  double uv_area = 0, area = 0, min_angle = 180, mean_edge = 0;
+  std::size_t edges = 0;
+};
+
+// Valid: counter-clockwise, each edge in at most two triangles and boundary edges in one, nodes
+// on the surface, boundary nodes unchanged.
+Figures check(const ParametricSurface& s, const RegionBoundary& b, const RegionMesh& m) {
+  Figures f;
+  std::map<std::pair<Index, Index>, int> edges;
+  for (const auto& t : m.tris) {
+    EXPECT_GT(geom::orient2d(m.uv[t[0]], m.uv[t[1]], m.uv[t[2]]), 0);
+    const Vec2 a = m.uv[t[1]] - m.uv[t[0]], c = m.uv[t[2]] - m.uv[t[0]];
+    f.uv_area += 0.5 * (a.x() * c.y() - a.y() * c.x());
+    const Vec3 &p = m.xyz[t[0]], &q = m.xyz[t[1]], &r = m.xyz[t[2]];
+    f.area += 0.5 * (q - p).cross(r - p).norm();
+    auto ang = [](const Vec3& x, const Vec3& y, const Vec3& z) { return std::atan2((y - x).cross(z - x).norm(), (y - x).dot(z - x)) * 180 / kPi; };
+    f.min_angle = std::min({f.min_angle, ang(p, q, r), ang(q, r, p), ang(r, p, q)});
+    for (int k = 0; k < 3; ++k) ++edges[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  }
+  for (const auto& [e, n] : edges) {
+    EXPECT_LE(n, 2);
+    f.mean_edge += (m.xyz[e.first] - m.xyz[e.second]).norm();
+  }
+  f.edges = edges.size();
+  f.mean_edge /= static_cast<double>(std::max<std::size_t>(edges.size(), 1));
+  for (const auto& loop : b.loops)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Index a = loop[i], c = loop[(i + 1) % loop.size()];
+      if (b.xyz[a] == b.xyz[c]) continue;
+      EXPECT_EQ(edges.count({std::min(a, c), std::max(a, c)}), 1u) << "boundary segment " << a << " " << c;
+    }
+  for (std::size_t i = 0; i < b.uv.size(); ++i) EXPECT_EQ(m.xyz[i], b.xyz[i]);
+  for (std::size_t i = b.uv.size(); i < m.uv.size(); ++i) EXPECT_LT((m.xyz[i] - s.point(m.uv[i])).norm(), 1e-12);
+  return f;
+}
+
+TEST(RegionMesher, SquareWithAHoleAtTheSize) {
+  const PlaneSurface plane(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY());
+  RegionBoundary b;
+  rectangle(plane, b, {0, 0}, {1, 1}, 20);
+  rectangle(plane, b, {0.4, 0.4}, {0.6, 0.6}, 4, true);
+  RegionMeshOptions o;
+  o.size = [](const Vec3&) { return 0.05; };
+  const RegionMesh m = mesh_region(plane, b, o);
+  const Figures f = check(plane, b, m);
+  EXPECT_NEAR(f.uv_area, 1 - 0.04, 1e-12);
+  EXPECT_GT(f.min_angle, 20);  // the criterion; nearly all are above 30
+  EXPECT_NEAR(f.mean_edge, 0.05, 0.012);
+  const double ideal = 0.96 / (std::sqrt(3.0) / 4 * 0.05 * 0.05);
+  EXPECT_GT(m.tris.size(), 0.7 * ideal);
+  EXPECT_LT(m.tris.size(), 1.4 * ideal);
+}
+
+TEST(RegionMesher, IsotropicOnASqueezedParametrisation) {
+  // a cylinder of radius 2 over a quarter turn, height 0.3, u and v both in [0, 1]: u spans
+  // 3.14 in 3D, v 0.3: triangles square in (u, v) would be needles
+  const CylinderSurface cyl(2.0, kPi / 2, 0.3);
+  RegionBoundary b;
+  std::vector<Index> loop;
+  const int nu = 63, nv = 6;
+  auto add = [&](double u, double v) {
+    loop.push_back(static_cast<Index>(b.uv.size()));
+    b.uv.push_back({u, v});
+    b.xyz.push_back(cyl.point({u, v}));
+  };
+  for (int i = 0; i < nu; ++i) add(static_cast<double>(i) / nu, 0);
+  for (int i = 0; i < nv; ++i) add(1, static_cast<double>(i) / nv);
+  for (int i = 0; i < nu; ++i) add(1 - static_cast<double>(i) / nu, 1);
+  for (int i = 0; i < nv; ++i) add(0, 1 - static_cast<double>(i) / nv);
+  b.loops.push_back(loop);
+  RegionMeshOptions o;
+  o.size = [](const Vec3&) { return 0.05; };
+  const RegionMesh m = mesh_region(cyl, b, o);
+  const Figures f = check(cyl, b, m);
+  EXPECT_NEAR(f.uv_area, 1, 1e-12);
+  EXPECT_GT(f.min_angle, 20);  // the criterion; nearly all are above 30
+  EXPECT_NEAR(f.mean_edge, 0.05, 0.012);
+}
+
+TEST(RegionMesher, GradedSize) {
+  const PlaneSurface plane(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY());
+  auto size = [](const Vec3& x) { return std::min(0.1, 0.01 + 0.3 * x.norm()); };  // fine at the origin corner
+  // the boundary discretised by the same function (as the B-rep route's edges are)
+  RegionBoundary b;
+  std::vector<Index> loop;
+  const Vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int side = 0; side < 4; ++side) {
+    const Vec2 p = corners[side], q = corners[(side + 1) % 4];
+    for (double s = 0; s < 1 - 1e-12;) {
+      loop.push_back(static_cast<Index>(b.uv.size()));
+      const Vec2 x = p + s * (q - p);
+      b.uv.push_back(x);
+      b.xyz.push_back(plane.point(x));
+      s += size(plane.point(x));
+      if (s > 1 - 0.3 * size(plane.point(q))) break;
+    }
+  }
+  b.loops.push_back(loop);
+  RegionMeshOptions o;
+  o.size = size;
+  const RegionMesh m = mesh_region(plane, b, o);
+  const Figures f = check(plane, b, m);
+  EXPECT_NEAR(f.uv_area, 1, 1e-12);
+  EXPECT_GT(f.min_angle, 20);
+  double near = 1e300, far = 0;
+  for (const auto& t : m.tris) {
+    const Vec3 c = (m.xyz[t[0]] + m.xyz[t[1]] + m.xyz[t[2]]) / 3;
+    const double e = (m.xyz[t[1]] - m.xyz[t[0]]).norm();
+    if (c.norm() < 0.1) near = std::min(near, e);
+    if (c.norm() > 1.0) far = std::max(far, e);
+  }
+  EXPECT_LT(near, 0.04);
+  EXPECT_GT(far, 0.07);
+}
+
+// A whole sphere: u the longitude over [0, 2 pi] (the seam at both ends), v the latitude with
+// the poles as degenerate segments of the boundary.
+class Sphere : public ParametricSurface {
+ public:
+  Vec3 point(const Vec2& uv) const override {
+    return Vec3(std::cos(uv.y()) * std::cos(uv.x()), std::cos(uv.y()) * std::sin(uv.x()), std::sin(uv.y()));
+  }
+  void derivatives(const Vec2& uv, Vec3* du, Vec3* dv) const override {
+    *du = Vec3(-std::cos(uv.y()) * std::sin(uv.x()), std::cos(uv.y()) * std::cos(uv.x()), 0);
+    *dv = Vec3(-std::sin(uv.y()) * std::cos(uv.x()), -std::sin(uv.y()) * std::sin(uv.x()), std::cos(uv.y()));
+  }
+  Vec2 uv_min() const override { return {0, -kPi / 2}; }
+  Vec2 uv_max() const override { return {2 * kPi, kPi / 2}; }
+  double period_u() const override { return 2 * kPi; }
+};
+
+TEST(RegionMesher, SphereWithPoles) {
+  const Sphere s;
+  RegionBoundary b;
+  std::vector<Index> loop;
+  auto add = [&](double u, double v) {
+    loop.push_back(static_cast<Index>(b.uv.size()));
+    b.uv.push_back({u, v});
+    b.xyz.push_back(s.point({u, v}));
+  };
+  const int n = 16;
+  // south pole segment (u from 0 to 2 pi at v = -pi/2, all one point), the seam up at 2 pi, the
+  // north pole segment back, the seam down at 0
+  add(0, -kPi / 2);
+  add(2 * kPi, -kPi / 2);
+  for (int i = 1; i < n; ++i) add(2 * kPi, -kPi / 2 + kPi * i / n);
+  add(2 * kPi, kPi / 2);
+  add(0, kPi / 2);
+  for (int i = n - 1; i > 0; --i) add(0, -kPi / 2 + kPi * i / n);
+  b.xyz[0] = b.xyz[1] = Vec3(0, 0, -1);
+  b.xyz[n + 1] = b.xyz[n + 2] = Vec3(0, 0, 1);
+  b.loops.push_back(loop);
+  RegionMeshOptions o;
+  o.size = [](const Vec3&) { return 0.2; };
+  const RegionMesh m = mesh_region(s, b, o);
+  for (const auto& t : m.tris)
+    for (int k = 0; k < 3; ++k) EXPECT_NE(m.xyz[t[k]], m.xyz[t[(k + 1) % 3]]) << "a triangle with two corners at one point";
+  double area = 0, worst = 180;
+  for (const auto& t : m.tris) {
+    const Vec3 &p = m.xyz[t[0]], &q = m.xyz[t[1]], &r = m.xyz[t[2]];
+    area += 0.5 * (q - p).cross(r - p).norm();
+    auto ang = [](const Vec3& x, const Vec3& y, const Vec3& z) { return std::atan2((y - x).cross(z - x).norm(), (y - x).dot(z - x)) * 180 / kPi; };
+    worst = std::min({worst, ang(p, q, r), ang(q, r, p), ang(r, p, q)});
+  }
+  EXPECT_NEAR(area, 4 * kPi, 0.03 * 4 * kPi);
+  EXPECT_GT(worst, 20);
+}
+
+TEST(RegionMesher, CrossingLoopsAreRefused) {
+  const PlaneSurface plane(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY());
+  RegionBoundary b;
+  rectangle(plane, b, {0, 0}, {1, 1}, 4);
+  rectangle(plane, b, {0.5, 0.5}, {1.5, 1.5}, 4, true);
+  RegionMeshOptions o;
+  o.size = [](const Vec3&) { return 0.1; };
+  EXPECT_THROW(mesh_region(plane, b, o), MeshingError);
+}
+
+}  // namespace
+}  // namespace bisect::surface
