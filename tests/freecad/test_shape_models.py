@@ -54,12 +54,6 @@ def model_files():
                   + glob.glob(os.path.join(MODELS, "cad", "*.brep")))
 
 
-# Known defects, left open (README, limits): Angled.step as FreeCAD reads it (its own STEP
-# import, handed over as a BREP string) gets one tetrahedron of four boundary nodes inside out
-# near (39.24, 69.84, 1.80) at every count; the mesher refuses it instead of returning it.
-KNOWN_DEFECTS = {"Angled.step": "came out inside out|Jacobian stays non-positive even straight"}
-
-
 def is_planar(face):
     return isinstance(face.Surface, Part.Plane)
 
@@ -96,10 +90,6 @@ class SharedModelsTest(unittest.TestCase):
             for R, order in ((1000, 2), (10000, 2), (100000, 1)):
                 with self.subTest(model=name, R=R):
                     report = {}
-                    if name in KNOWN_DEFECTS:
-                        with self.assertRaisesRegex(RuntimeError, KNOWN_DEFECTS[name]):
-                            shape_mesher.mesh_shape(shape, elements=R, order=order, report=report)
-                        continue
                     mesh = shape_mesher.mesh_shape(shape, elements=R, order=order, report=report)
                     quality = bisectmesh.quality(mesh)
                     self.assertTrue(quality["valid"], quality["violations"][:5])

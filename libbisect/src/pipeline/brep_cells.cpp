@@ -24,7 +24,7 @@ struct Side {
 
 std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    BrepCellCounts* counts) {
+                                    bool last_resort_allowed, BrepCellCounts* counts) {
   const std::size_t n = d.cells.size();
   const PolyhedralModel& m = d.model;
   // per cell: its face pieces' triangles (outward) and its cut faces with their two sides
@@ -91,8 +91,12 @@ std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, 
     return tet::star_centre(X, job.boundary, job.interior, job.centre, &node, &point);
   };
   *counts = {};
+  std::vector<char> last_resort(n, 0);  // cells filled in the proxy keeping fixed inverted tetrahedra
   for (std::size_t c = 0; c < n; ++c) {
     if (group[c] != static_cast<Index>(c)) continue;
+    const std::vector<Index> group_before = group;
+    const std::vector<std::vector<Index>> members_before = members;
+    const std::int64_t joined_before = counts->joined;
     for (int joins = 0;; ++joins) {
       const Index root = group[c];
       CellJob job = job_of(root);
@@ -102,9 +106,6 @@ std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, 
         job.in_proxy = true;
         if (fill_job_works(job, X, &P, delaunay)) break;
       }
-      if (joins >= kMaxJoins)
-        throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and its proxy's filling "
-                                      "cannot be untangled (the cell is narrower than the curved face's bulge next to it)");
       // the neighbour across the group's largest cut face to the outside
       Index best = -1;
       std::size_t most = 0;
@@ -112,7 +113,18 @@ std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, 
         for (const auto& [f, out] : cuts[mc])
           for (const Side& s : cut_sides[f])
             if (group[s.cell] != root && (best < 0 || g.cut_tris[f].size() > most)) most = g.cut_tris[f].size(), best = s.cell;
-      if (best < 0) throw MeshingError(job.name + ": no point sees its whole boundary, and it has no neighbour to join");
+      if (joins >= kMaxJoins || best < 0) {
+        // the last resort: the cell alone, filled in the proxy, a tetrahedron of four boundary
+        // nodes left inverted for the global optimisation's flips
+        group = group_before, members = members_before, counts->joined = joined_before;
+        CellJob alone = job_of(static_cast<Index>(c));
+        alone.in_proxy = alone.keep_fixed_inverted = true;
+        if (!last_resort_allowed || !fill_job_works(alone, X, &P, delaunay))
+          throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and its proxy's filling "
+                                        "cannot be untangled (the cell is narrower than the curved face's bulge next to it)");
+        last_resort[c] = 1;
+        break;
+      }
       const Index other = group[best];
       for (Index k : members[other]) group[k] = root;
       members[root].insert(members[root].end(), members[other].begin(), members[other].end());
@@ -124,7 +136,10 @@ std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, 
   for (std::size_t c = 0; c < n; ++c) {
     if (group[c] != static_cast<Index>(c)) continue;
     jobs.push_back(job_of(static_cast<Index>(c)));
-    if (members[c].size() == 1 && !star(jobs.back())) jobs.back().in_proxy = true, ++counts->in_proxy;
+    if (members[c].size() == 1 && !star(jobs.back())) {
+      jobs.back().in_proxy = true, jobs.back().keep_fixed_inverted = last_resort[c] != 0;
+      ++counts->in_proxy;
+    }
   }
   return jobs;
 }

@@ -3,7 +3,10 @@
 // filled as it is; a narrow one beside a concave face (a sliver between two cuts next to a hole)
 // may not be: it is filled in the proxy's geometry, where it is convex (proxy_fill.hpp), when
 // the tetrahedra made there can be untangled on the true geometry; otherwise it is joined with
-// its neighbours across cut faces (a few at most) until a point sees the group whole.
+// its neighbours across cut faces (a few at most) until a point sees the group whole. Failing
+// that (a caller that can try a finer proxy first says so), the last resort: the cell alone in
+// the proxy's geometry, a tetrahedron of four boundary nodes allowed to stay inverted for the
+// global optimisation to flip away (the finished mesh is checked).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -30,6 +33,6 @@ struct BrepCellCounts {
 // MeshingError naming the cell when none of the three ways works.
 std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    BrepCellCounts* counts);
+                                    bool last_resort_allowed, BrepCellCounts* counts);
 
 }  // namespace bisect::pipeline

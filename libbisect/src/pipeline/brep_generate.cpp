@@ -93,6 +93,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
   // even joined with its neighbours (brep_cells.hpp): the whole route then runs again on a finer
   // proxy, whose facets bulge less.
   const double first_angle = proxy_angle(opt.sizing);
+  constexpr int kProxyAttempts = 3;  // the proxy's angle, then a half and a third of it
   for (int attempt = 0;; ++attempt) {
     const double angle = first_angle / (1 + attempt);
     try {
@@ -141,7 +142,8 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
       std::vector<Vec3> X = placed.X;
       pipeline::BrepCellCounts cell_counts;
       const std::vector<pipeline::CellJob> jobs =
-          pipeline::brep_cell_jobs(dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, &cell_counts);
+          pipeline::brep_cell_jobs(dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, attempt == kProxyAttempts - 1,
+                                   &cell_counts);
       pipeline::FilledCells cells = pipeline::fill_cell_jobs(X, jobs, opt.delaunay_insertion, opt.threads, fill_progress, &placed.P);
       st.gen_tets += since(t_fill);
       ++st.fillings;
@@ -160,7 +162,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
     }
       break;
     } catch (const MeshingError& e) {
-      if (attempt >= 2) throw;
+      if (attempt >= kProxyAttempts - 1) throw;
       const double total = st.total;
       st = GenerateStats{};
       st.total = total;

@@ -24,6 +24,7 @@ struct CellJob {
   // The B-rep route: fill in the proxy's geometry (proxy_fill.hpp) at the nodes' proxy positions
   // (fill_cell_jobs' P), the cell being convex there, when no point sees it whole as it is.
   bool in_proxy = false;
+  bool keep_fixed_inverted = false;  // in_proxy: the last resort (proxy_fill.hpp)
   Vec3 centre_p = Vec3::Zero();  // the proxy cell's centroid
 };
 

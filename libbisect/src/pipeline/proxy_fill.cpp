@@ -67,7 +67,8 @@ bool chebyshev_centre(const std::vector<Vec3>& X, const std::vector<tet::Tet>& t
 }  // namespace
 
 std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, const std::vector<std::array<Index, 3>>& boundary,
-                                    const std::vector<Index>& interior, const Vec3& centroid_p, bool delaunay, tet::CellFillStats* stats) {
+                                    const std::vector<Index>& interior, const Vec3& centroid_p, bool delaunay, tet::CellFillStats* stats,
+                                    bool keep_fixed_inverted) {
   const std::size_t before = P.size();
   std::vector<tet::Tet> tets = tet::fill_convex_cell(P, boundary, interior, centroid_p, delaunay, stats);
   for (std::size_t v = before; v < P.size(); ++v) X.push_back(P[v]);  // a helper: inside, away from the moved boundary
@@ -89,7 +90,10 @@ std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, 
       if (inverted(t))
         for (Index v : t)
           if (!fixed[v]) bad.push_back(v);
-    if (bad.empty()) return tets;
+    if (bad.empty()) {  // none inverted, or only ones with no node free to move
+      if (keep_fixed_inverted) return tets;
+      break;
+    }
     std::sort(bad.begin(), bad.end());
     bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     bool moved = false;

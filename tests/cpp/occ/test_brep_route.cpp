@@ -161,7 +161,9 @@ TEST(BrepRouteCompSolid, OneConformingMeshWithAnInterface) {
     for (std::size_t v = 0; v < m.nodes.size(); ++v)
       if (in_region[0][v] && in_region[1][v]) {
         ++shared;
-        if (shared % 7 == 0) EXPECT_LT(check.distance_to_face(shared_face, m.nodes[v]), 1e-6) << name << " node " << v;
+        if (shared % 7 == 0) {
+          EXPECT_LT(check.distance_to_face(shared_face, m.nodes[v]), 1e-6) << name << " node " << v;
+        }
       }
     EXPECT_GT(shared, 50u) << name;
   }
