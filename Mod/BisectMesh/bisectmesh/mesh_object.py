@@ -158,8 +158,14 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=
     shape, resolution  already read from ``part`` (the task panel reads them in the GUI thread and
                        meshes in another); by default read here.
     """
-    from . import shape_mesher
+    from . import arguments, shape_mesher
 
+    elements, size = arguments.count_or_size(elements, size)
+    order = arguments.order(order)
+    use_hints = arguments.flag("use_hints", use_hints)
+    optimize = arguments.passes("optimize", optimize)
+    smooth = arguments.passes("smooth", smooth)
+    progress = arguments.optional_callable("progress", progress)
     if shape is None:
         shape = part_shape(part)
     if use_hints and resolution is None:
@@ -309,26 +315,41 @@ def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints
     optimize, smooth  optimisation and smoothing passes
     analysis          the FEM analysis to add it to; by default the active one in the GUI
 
-    Returns the ``Fem::FemMeshObjectPython``.
+    Returns the ``Fem::FemMeshObjectPython``. TypeError for an argument of the wrong type,
+    ValueError (naming the argument) for a value that cannot be meshed.
     """
     import FreeCAD
 
-    if elements is not None and size is not None:
-        raise ValueError("give elements or size, not both")
+    from . import arguments
+
+    if not isinstance(doc, FreeCAD.Document):
+        raise TypeError("doc must be a FreeCAD document, not %s" % type(doc).__name__)
+    if not isinstance(part_obj, FreeCAD.DocumentObject) or not hasattr(part_obj, "Shape"):
+        raise TypeError("part_obj must be a document object with a Shape, not %s" % type(part_obj).__name__)
+    if part_obj.Document is not doc:
+        raise ValueError("part_obj %s is in document %s, not in %s" % (part_obj.Label, part_obj.Document.Name, doc.Name))
     if elements is None and size is None:
         elements = DEFAULT_ELEMENTS
-    if order not in (1, 2):
-        raise ValueError("order must be 1 or 2, not %r" % (order,))
+    elements, size = arguments.count_or_size(elements, size)
+    order = arguments.order(order)
+    use_hints = arguments.flag("use_hints", use_hints)
+    optimize = arguments.passes("optimize", optimize)
+    smooth = arguments.passes("smooth", smooth)
+    if not isinstance(name, str) or not name:
+        raise TypeError("name must be a non-empty string, not %r" % (name,))
+    if analysis is not None and not (isinstance(analysis, FreeCAD.DocumentObject)
+                                     and analysis.isDerivedFrom("Fem::FemAnalysis")):
+        raise TypeError("analysis must be a FEM analysis or None, not %s" % type(analysis).__name__)
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     MeshObject(obj)
     obj.Part = part_obj
     obj.ElementOrder = ORDERS[order - 1]
-    obj.TargetElements = int(elements) if elements is not None else 0
+    obj.TargetElements = elements if elements is not None else 0
     if size is not None:
-        obj.ElementSize = float(size)
-    obj.UseResolutionHints = bool(use_hints)
-    obj.OptimizePasses = int(optimize)
-    obj.SmoothPasses = int(smooth)
+        obj.ElementSize = size
+    obj.UseResolutionHints = use_hints
+    obj.OptimizePasses = optimize
+    obj.SmoothPasses = smooth
     if FreeCAD.GuiUp:
         ViewProviderMeshObject(obj.ViewObject)
         if analysis is None:
