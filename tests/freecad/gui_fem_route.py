@@ -11,9 +11,10 @@ package.xml and runs Init.py and InitGui.py, and with a fresh user configuration
 
 It checks that both commands exist before any workbench has been activated, then activates the
 FEM workbench only and finds the BisectMesh toolbar and the Mesh menu entries there, runs both
-commands from that toolbar on a part in an analysis, checks that switching workbenches does not
+commands from that toolbar on a part in an analysis, checks that a recompute marks a mesh object
+instead of meshing it and that Re-mesh meshes it in the panel's worker with progress, checks that switching workbenches does not
 duplicate the menu entries, that a toolbar the user deleted stays deleted, and that the
-BisectMesh workbench still works alone. Screenshot: fem_route.png.
+BisectMesh workbench still works alone. Screenshots: fem_route.png, fem_route_stale.png.
 """
 
 import os
@@ -27,7 +28,7 @@ HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/
 sys.path.insert(0, HERE)
 from gui_harness import ARTIFACTS, BUILD_MOD, check, log, settle  # noqa: E402
 
-MESH, QUALITY = "BisectMesh_Mesh", "BisectMesh_Quality"
+MESH, REMESH, QUALITY = "BisectMesh_Mesh", "BisectMesh_Remesh", "BisectMesh_Quality"
 
 
 def command_action(name):
@@ -71,7 +72,7 @@ def run():
     active = FreeCADGui.activeWorkbench().name()
     check(active != "BisectMeshWorkbench", "BisectMesh is not the active workbench (%s is)" % active)
     # -- the commands exist before any BisectMesh activation -------------------------------------
-    for name in (MESH, QUALITY):
+    for name in (MESH, REMESH, QUALITY):
         check(FreeCADGui.Command.get(name) is not None, "%s is registered at start-up" % name)
 
     from bisectmesh.gui import commands
@@ -87,11 +88,11 @@ def run():
     check(FreeCADGui.activeWorkbench().name() == "FemWorkbench", "the FEM workbench is active")
     bar = visible_toolbar("BisectMesh")
     check(bar is not None, "the FEM workbench shows a BisectMesh toolbar")
-    for name in (MESH, QUALITY):
+    for name in (MESH, REMESH, QUALITY):
         check(command_action(name) in bar.actions(), "the toolbar holds %s" % name)
     actions = fem_mesh_menu_actions()
     check(actions is not None, "the FEM workbench has its Mesh menu")
-    for name in (MESH, QUALITY):
+    for name in (MESH, REMESH, QUALITY):
         check(actions.count(command_action(name)) == 1, "FEM's Mesh menu holds %s once" % name)
 
     # -- both commands run from the FEM toolbar -------------------------------------------------
@@ -130,6 +131,46 @@ def run():
     FreeCADGui.Control.closeDialog()
     settle(300)
 
+    # -- a recompute never meshes; Re-mesh does, in the worker thread, with progress ---------------
+    import time
+
+    obj = bisectmesh.make_mesh_object(doc, part, elements=30000, order=1, analysis=analysis)
+    doc.recompute()
+    check(obj.NeedsRemesh and obj.FemMesh.VolumeCount == 0, "a new mesh object: marked by the recompute, not meshed")
+    check(obj.ViewObject.Proxy.getIcon().endswith("BisectMesh_MeshStale.svg"), "its tree icon is the stale one")
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(obj)
+    settle(300)
+    check(command_action(REMESH).isEnabled(), "Re-mesh is enabled on the selected mesh object")
+    command_action(REMESH).trigger()
+    panel = mesh_panel.MeshPanel.open_panel
+    check(panel is not None and panel.worker is not None, "Re-mesh opened the panel, meshing in its worker")
+    values, longest, last, start = [], 0.0, time.time(), time.time()
+    while FreeCADGui.Control.activeDialog():
+        if time.time() - start > 120:
+            raise AssertionError("Re-mesh did not finish in 120 s")
+        settle(20)
+        now = time.time()
+        longest, last = max(longest, now - last), now
+        if not panel.closed:
+            values.append(panel.progress.value())
+    log("progress values seen: %d, from %s to %s; longest GUI gap %.2f s" % (
+        len(values), values[:1], values[-1:], longest))
+    check(not obj.NeedsRemesh and obj.FemMesh.VolumeCount > 15000, "the panel closed by itself with the object "
+          "meshed: %d tetrahedra" % obj.FemMesh.VolumeCount)
+    check(obj.ViewObject.Proxy.getIcon().endswith("BisectMesh_Mesh.svg"), "its tree icon is the plain one again")
+    check(len(set(values)) >= 3, "the progress bar moved (%d distinct values)" % len(set(values)))
+    check(longest < 1.0, "the window kept running: longest gap between event-loop turns %.2f s" % longest)
+    tets = obj.FemMesh.VolumeCount
+    obj.TargetElements = 60000
+    start = time.time()
+    doc.recompute()
+    seconds = time.time() - start
+    check(seconds < 0.5 and obj.FemMesh.VolumeCount == tets and obj.NeedsRemesh,
+          "a changed parameter: the recompute took %.2f s, kept the mesh and marked it" % seconds)
+    check(obj.ViewObject.Proxy.getIcon().endswith("BisectMesh_MeshStale.svg"), "and the icon says so")
+    save_window("fem_route_stale.png")
+
     # -- switching workbenches leaves one entry each --------------------------------------------
     FreeCADGui.activateWorkbench("PartWorkbench")
     settle(300)
@@ -138,7 +179,7 @@ def run():
     settle(300)
     check(visible_toolbar("BisectMesh") is not None, "the toolbar is back in FEM")
     actions = fem_mesh_menu_actions()
-    for name in (MESH, QUALITY):
+    for name in (MESH, REMESH, QUALITY):
         check(actions.count(command_action(name)) == 1, "still once in FEM's Mesh menu: %s" % name)
 
     # -- a toolbar the user deleted stays deleted; the update keeps the user's Active ------------

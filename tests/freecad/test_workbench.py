@@ -118,7 +118,7 @@ class WorkbenchFilesTest(unittest.TestCase):
     def test_icons_are_svg(self):
         from bisectmesh.gui import icon_path
 
-        for name in ("BisectMesh.svg", "BisectMesh_Quality.svg"):
+        for name in ("BisectMesh.svg", "BisectMesh_Quality.svg", "BisectMesh_Mesh.svg", "BisectMesh_MeshStale.svg"):
             path = icon_path(name)
             self.assertTrue(os.path.isfile(path), name)
             root = ElementTree.parse(path).getroot()

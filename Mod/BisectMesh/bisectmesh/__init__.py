@@ -5,6 +5,8 @@ The macro API (the workbench's commands are thin wrappers over it)::
     import bisectmesh
     mesh = bisectmesh.mesh_shape(part_obj.Shape, elements=20000, order=2,
                                  resolution=bisectmesh.view_resolution(part_obj))   # a Fem.FemMesh
+    obj = bisectmesh.make_mesh_object(doc, part_obj, elements=20000)   # a document object ...
+    bisectmesh.remesh(obj)                                   # ... meshed (a recompute never does)
     report = bisectmesh.quality(mesh)   # of a Fem.FemMesh or a FEM mesh object
     report["valid"], report["gamma_mean"], report["measures"]["gamma"]["histogram"]
 
@@ -17,7 +19,7 @@ __version__ = "0.1.0"
 
 MEASURES = ("dihedral_min", "dihedral_max", "solid_angle_min", "gamma", "alpha")
 
-from .mesh_object import make_mesh_object  # noqa: E402,F401  (imports FreeCAD only when called)
+from .mesh_object import make_mesh_object, remesh  # noqa: E402,F401  (import FreeCAD only when called)
 
 
 def core():

@@ -1,8 +1,17 @@
-"""The BisectMesh FEM mesh document object: a ``Fem::FemMeshObjectPython`` that meshes the solids
-of a Part object with :func:`bisectmesh.shape_mesher.mesh_shape` whenever it is recomputed.
+"""The BisectMesh FEM mesh document object: a ``Fem::FemMeshObjectPython`` that holds a mesh of
+the solids of a Part object, made by :func:`bisectmesh.shape_mesher.mesh_shape`.
 
     obj = bisectmesh.make_mesh_object(doc, part_obj, elements=5000)   # or size=2.5
-    doc.recompute()                                                   # meshes; obj.FemMesh is set
+    bisectmesh.remesh(obj)                                            # meshes (blocking)
+
+Like FreeCAD's Gmsh object, a document recompute never meshes: meshing is slow, and a recompute
+cannot show progress or be stopped. A recompute checks the object's inputs instead (its
+parameters, the Part's geometry and, with UseResolutionHints, the Part's view resolution): when
+they differ from those of the last meshing, the object is marked as needing a re-mesh
+(NeedsRemesh, MeshStatus, and a greyed icon with a warning badge in the tree). Meshing happens in
+the task panel, through the Re-mesh command (a worker thread with progress and Stop), or in a
+macro through :func:`remesh`. A property that makes no sense (a Part without a solid, a negative
+count) is reported in one line naming the object, and the mesh is marked, never a traceback.
 
 The parameters are properties (group "BisectMesh"), the results read-only properties (group
 "Results"). FreeCAD stores the FemMesh in the document itself; the proxies below keep no state
@@ -13,6 +22,7 @@ FEM's own C++ view provider of ``Fem::FemMeshObjectPython``.
 FreeCAD is imported inside the functions: ``import bisectmesh`` stays possible without it.
 """
 
+import hashlib
 import json
 import time
 
@@ -54,11 +64,19 @@ _RESULT_PROPERTIES = (
     ("App::PropertyString", "Summary", "The last meshing in a few lines: counts, stage times, quality"),
     ("App::PropertyString", "ResultData", "The last meshing's counts, times and quality as JSON "
      "(what the panel shows)"),
+    ("App::PropertyBool", "NeedsRemesh", "True when the mesh no longer matches the Part or the "
+     "parameters (or there is none yet): re-mesh with the Re-mesh command, the panel, or "
+     "bisectmesh.remesh(obj). A recompute never re-meshes"),
+    ("App::PropertyString", "MeshStatus", "Why the mesh needs a re-mesh, or what is wrong with the "
+     "parameters; empty when the mesh is up to date"),
+    ("App::PropertyString", "MeshedInputs", "Fingerprint of the inputs of the last meshing"),
 )
+_HIDDEN_RESULTS = ("ResultData", "MeshedInputs")
 
 
 class MeshObject:
-    """Proxy of a BisectMesh FEM mesh object: re-meshes ``Part`` on recompute."""
+    """Proxy of a BisectMesh FEM mesh object: on recompute, marks the mesh as needing a re-mesh
+    when its inputs changed (it never meshes there)."""
 
     Type = TYPE
 
@@ -80,31 +98,35 @@ class MeshObject:
         for kind, name, tooltip in _RESULT_PROPERTIES:
             if name not in present:
                 obj.addProperty(kind, name, _RESULTS, tooltip, _PROP_OUTPUT)
-            # read-only; ResultData hidden too: JSON for the panel, not for people
-            obj.setEditorMode(name, 2 if name == "ResultData" else 1)
+            # read-only; ResultData and MeshedInputs hidden too: for the code, not for people
+            obj.setEditorMode(name, 2 if name in _HIDDEN_RESULTS else 1)
 
     def onDocumentRestored(self, obj):
         self.init_properties(obj)
 
     def execute(self, obj):
-        arguments = mesh_arguments(obj)
-        part = obj.Part
-        shape = part_shape(part)
-        # FreeCAD shows the message as the object's recompute error: say which Part it is about
+        """Checks the inputs; never meshes (see the module's docstring)."""
         try:
-            femmesh, result = mesh_part(part, shape=shape, **arguments)
+            key = input_key(obj)
         except ValueError as err:
-            raise ValueError("%s: %s" % (part.Label, err)) from err
-        except RuntimeError as err:
-            raise RuntimeError("%s: %s" % (part.Label, err)) from err
-        obj.FemMesh = femmesh
-        set_results(obj, result)
+            mark_stale(obj, str(err), error=True)
+            return
+        if not obj.MeshedInputs and obj.FemMesh.VolumeCount > 0 and obj.ResultData:
+            # saved by a version that kept no fingerprint: the mesh is taken as the inputs' own
+            obj.MeshedInputs = key
+        if key != obj.MeshedInputs:
+            mark_stale(obj, "not meshed yet" if not obj.ResultData
+                       else "the Part or a parameter changed since the last meshing")
+        else:
+            mark_current(obj)
 
-    def adopt(self, obj, femmesh, result):
-        """Takes a mesh computed elsewhere from the object's current parameters (the task panel
-        meshes in a worker thread) instead of meshing again on the next recompute."""
+    def adopt(self, obj, femmesh, result, key=None):
+        """Takes a mesh made from the object's current inputs (by :func:`remesh`, or by the task
+        panel in a worker thread); ``key``: their fingerprint, if already known."""
         obj.FemMesh = femmesh
         set_results(obj, result)
+        obj.MeshedInputs = key if key is not None else input_key(obj)
+        mark_current(obj)
         obj.purgeTouched()
 
     # FreeCAD pickles the proxy into the document: there is nothing to keep.
@@ -113,6 +135,94 @@ class MeshObject:
 
     def __setstate__(self, state):
         return None
+
+
+def input_key(obj):
+    """A fingerprint of everything a meshing of ``obj`` depends on: its parameters, the Part's
+    geometry (its BREP text, placement included) and, with UseResolutionHints, the Part's view
+    resolution. ValueError (one line, naming the object) when the parameters make no sense."""
+    from . import shape_mesher
+
+    arguments = mesh_arguments(obj)
+    part = obj.Part
+    try:
+        shape = part_shape(part)
+    except ValueError as err:
+        raise ValueError("%s: %s" % (obj.Label, err)) from None
+    resolution = shape_mesher.view_resolution(part) if arguments["use_hints"] else None
+    digest = hashlib.sha1(shape_fingerprint(shape).encode())
+    digest.update(json.dumps([part.Name, arguments, resolution], sort_keys=True).encode())
+    return digest.hexdigest()
+
+
+def shape_fingerprint(shape):
+    """The geometry of ``shape`` as text that a geometric edit changes and a mere copy, a save
+    and reload, or a tessellation for the view do not (its BREP text does: it carries the
+    triangulation): the sub-shape counts, every vertex (placed), the type, area and centre of
+    every face, the length of every edge, and the volume, to 10 significant digits."""
+    def g(x):
+        return "%.10g" % x
+
+    parts = [shape.ShapeType, str(len(shape.Solids)), str(len(shape.Shells)), str(len(shape.Faces)),
+             str(len(shape.Edges)), g(shape.Volume)]
+    parts.extend("%s,%s,%s" % (g(v.X), g(v.Y), g(v.Z)) for v in shape.Vertexes)
+    for face in shape.Faces:
+        centre = face.CenterOfMass
+        parts.append("%s:%s:%s,%s,%s" % (type(face.Surface).__name__, g(face.Area), g(centre.x), g(centre.y),
+                                          g(centre.z)))
+    parts.extend(g(edge.Length) for edge in shape.Edges)
+    return ";".join(parts)
+
+
+def mark_stale(obj, reason, error=False):
+    """Marks the mesh as needing a re-mesh, says why once in the report view, and greys its icon."""
+    import FreeCAD
+
+    changed = not obj.NeedsRemesh or obj.MeshStatus != reason
+    obj.NeedsRemesh = True
+    obj.MeshStatus = reason
+    if changed:
+        if error:
+            FreeCAD.Console.PrintError("BisectMesh: %s\n" % reason)
+        else:
+            FreeCAD.Console.PrintWarning("BisectMesh: %s needs a re-mesh: %s\n" % (obj.Label, reason))
+        _refresh_icon(obj)
+
+
+def mark_current(obj):
+    if obj.NeedsRemesh or obj.MeshStatus:
+        obj.NeedsRemesh = False
+        obj.MeshStatus = ""
+        _refresh_icon(obj)
+
+
+def _refresh_icon(obj):
+    view = getattr(obj, "ViewObject", None)
+    if view is not None and hasattr(view, "signalChangeIcon"):
+        view.signalChangeIcon()
+
+
+def remesh(obj, progress=None):
+    """Meshes the BisectMesh mesh object ``obj`` from its current Part and parameters, blocking
+    (for macros; the GUI's Re-mesh command does the same in a worker thread). ``progress`` as for
+    :func:`bisectmesh.mesh_shape`. Returns the result dict (see :func:`mesh_part`).
+
+    TypeError unless ``obj`` is a BisectMesh mesh object; ValueError, naming the object, for
+    parameters that make no sense; the exceptions of mesh_shape otherwise."""
+    if not is_mesh_object(obj):
+        raise TypeError("obj must be a BisectMesh mesh object (made by make_mesh_object), not %r" % (obj,))
+    key = input_key(obj)
+    part = obj.Part
+    try:
+        femmesh, result = mesh_part(part, shape=part_shape(part), progress=progress, **mesh_arguments(obj))
+    except ValueError as err:
+        raise ValueError("%s: %s" % (part.Label, err)) from err
+    except RuntimeError as err:
+        if type(err).__name__ == "Cancelled":
+            raise
+        raise RuntimeError("%s: %s" % (part.Label, err)) from err
+    obj.Proxy.adopt(obj, femmesh, result, key)
+    return result
 
 
 def mesh_arguments(obj):
@@ -259,7 +369,9 @@ class ViewProviderMeshObject:
     def getIcon(self):
         from .gui import icon_path
 
-        return icon_path("BisectMesh_Mesh.svg")
+        obj = getattr(self, "Object", None)
+        stale = obj is not None and getattr(obj, "NeedsRemesh", False)
+        return icon_path("BisectMesh_MeshStale.svg" if stale else "BisectMesh_Mesh.svg")
 
     def setEdit(self, vobj, mode=0):
         if mode != 0:
@@ -305,8 +417,8 @@ class ViewProviderMeshObject:
 
 def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints=True, optimize=3,
                      smooth=3, name="BisectMesh", analysis=None):
-    """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc`` (not yet meshed: that is
-    the next recompute's job).
+    """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc``, not yet meshed (marked
+    NeedsRemesh): mesh it with :func:`remesh` (blocking), the Re-mesh command or the panel.
 
     elements | size   the target tetrahedron count, or the element size in mm (at most one;
                       neither: 5000 elements)

@@ -245,6 +245,9 @@ class MeshPanel:
             self.progress.setFormat("last mesh")
             self.status.setText("The last mesh of %s; change the settings and press Mesh to mesh again."
                                 % _escape(obj.Label))
+        if getattr(obj, "NeedsRemesh", False) and obj.MeshStatus:
+            self.status.setText("<span style='color:#8a6d00'><b>Needs a re-mesh:</b> %s</span>"
+                                % _escape(obj.MeshStatus))
 
     def _mode_changed(self, _checked):
         self.elements.setEnabled(self.by_count.isChecked() and self.worker is None)
@@ -324,6 +327,11 @@ class MeshPanel:
         self.progress.setFormat("%p%")
         self.status.setText("Meshing %s\u2026" % _escape(part.Label))
         self.worker.start()
+
+    def accept_when_done(self):
+        """Presses OK for the user once the running meshing has finished well (the Re-mesh
+        command); Stop, Cancel or an error leave the panel open and the object as it was."""
+        self._accept_when_done = self.worker is not None
 
     def stop(self):
         """Asks the running meshing to stop (the Stop button); it stops at its next progress report."""
@@ -448,8 +456,9 @@ class MeshPanel:
                     FreeCADGui.doCommand("%s.%s = %r" % (expr, prop, value))
                 if args["size"] is not None:
                     FreeCADGui.doCommand("%s.ElementSize = %r" % (expr, args["size"]))
-            # the mesh just computed, not a second meshing on the recompute below
+            # the mesh just computed: a macro meshes here with the line below, uncommented
             obj.Proxy.adopt(obj, femmesh, result)
+            FreeCADGui.doCommand("# bisectmesh.remesh(%s.getObject(%r))  # meshed by the panel" % (doc_expr, obj.Name))
             FreeCADGui.doCommand("%s.recompute()" % doc_expr)
             FreeCADGui.doCommandGui("FreeCADGui.getDocument(%r).getObject(%r).Visibility = False"
                                     % (self.doc_name, self.part_name))
