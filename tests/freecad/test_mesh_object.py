@@ -282,6 +282,36 @@ class MeshObjectTest(unittest.TestCase):
         finally:
             shutil.rmtree(folder, ignore_errors=True)
 
+    def test_design_one_way_imports_one_table_one_formula(self):
+        import subprocess
+        import sys
+
+        from bisectmesh import arguments
+        from bisectmesh.gui import view_provider
+
+        # documents saved before the view provider moved to gui/ still find it
+        self.assertIs(mesh_object.ViewProviderMeshObject, view_provider.ViewProviderMeshObject)
+        with self.assertRaises(AttributeError):
+            mesh_object.NoSuchThing
+        # mesh_object imports nothing of the GUI: a plain interpreter without FreeCAD loads it
+        mod = os.path.dirname(os.path.dirname(os.path.abspath(bisectmesh.__file__)))
+        code = ("import sys; sys.path.insert(0, %r); import bisectmesh.mesh_object; "
+                "print(sorted(m for m in sys.modules if m.startswith('bisectmesh.gui') or m == 'FreeCADGui'))" % mod)
+        out = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, timeout=60)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertEqual(out.stdout.strip(), "[]")
+        # one spacing formula: the element size the panel proposes asks for the count it names
+        volume = self.part.Shape.Volume
+        size = arguments.spacing_for(volume, 5000)
+        self.assertAlmostEqual(arguments.elements_for(volume, size), 5000.0, places=6)
+        self.assertAlmostEqual(arguments.VOLUME_PER_TET, 0.11785113, places=8)  # 1/(6 sqrt 2)
+        # one table of stage names: the object's summary and the panel read the same one
+        result = {"tets": 10, "order": 1, "nodes": 8, "seconds": 1.0,
+                  "times": {key: 0.5 for key, _ in mesh_object.STAGES}, "quality": {}}
+        line = mesh_object.summary(result).splitlines()[1]
+        for _, label in mesh_object.STAGES:
+            self.assertIn(label.lower() + " 0.500", line)
+
     def test_command_and_panel_modules(self):
         from xml.etree import ElementTree
 
@@ -299,6 +329,10 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg")
         self.assertEqual(root.get("viewBox"), "0 0 64 64")
         self.assertTrue(hasattr(mesh_panel.MeshPanel, "getStandardButtons"))
+        from bisectmesh import arguments
+
+        self.assertEqual(mesh_panel._size_for(1717.0, 5000), round(arguments.spacing_for(1717.0, 5000), 3))
+        self.assertFalse(hasattr(mesh_panel, "_STAGES"))
 
 
 if __name__ == "__main__":

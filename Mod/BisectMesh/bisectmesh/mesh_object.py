@@ -16,8 +16,9 @@ count) is reported in one line naming the object, and the mesh is marked, never 
 The parameters are properties (group "BisectMesh"), the results read-only properties (group
 "Results"). FreeCAD stores the FemMesh in the document itself; the proxies below keep no state
 of their own, so that a saved document reopens with ``bisectmesh.mesh_object`` importable and
-nothing else. The view provider only adds an icon and the edit panel: the mesh is drawn by
-FEM's own C++ view provider of ``Fem::FemMeshObjectPython``.
+nothing else. The view provider (gui/view_provider.py) only adds an icon and the edit panel: the
+mesh is drawn by FEM's own C++ view provider of ``Fem::FemMeshObjectPython``. This module imports
+nothing of the GUI at load time.
 
 FreeCAD is imported inside the functions: ``import bisectmesh`` stays possible without it.
 """
@@ -312,8 +313,9 @@ def result_of(femmesh, report, seconds, order):
     return json.loads(json.dumps(result, default=float))  # plain types only
 
 
-_STAGES = (("init_geom", "init geom"), ("bisect", "bisect"), ("gen_nodes", "gen. nodes"),
-           ("gen_tets", "gen. tets"), ("optimize", "optimize"), ("total", "total"))
+# the generator's stages (the keys of its stats' "times"), named as the thesis's tables name them
+STAGES = (("init_geom", "Init geom"), ("bisect", "Bisect"), ("gen_nodes", "Gen. nodes"),
+          ("gen_tets", "Gen. tets"), ("optimize", "Optimize"), ("total", "Total"))
 
 
 def summary(result):
@@ -323,7 +325,7 @@ def summary(result):
     times = result.get("times") or {}
     if times:
         lines.append("stages (s): " + ", ".join(
-            "%s %.3f" % (label, times[key]) for key, label in _STAGES if key in times))
+            "%s %.3f" % (label.lower(), times[key]) for key, label in STAGES if key in times))
     q = result.get("quality") or {}
     if "dihedral_min" in q:
         lines.append("dihedral angles %.2f .. %.2f deg, %.2f%% of elements below 10 deg" % (
@@ -354,65 +356,6 @@ def stored_result(obj):
 def is_mesh_object(obj):
     """True for a BisectMesh FEM mesh object."""
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
-
-
-class ViewProviderMeshObject:
-    """View provider proxy: our icon, and the mesh panel on double-click or Edit. The mesh itself
-    is drawn by FEM's ViewProviderFemMeshPython, which this proxy extends."""
-
-    def __init__(self, vobj):
-        vobj.Proxy = self
-
-    def attach(self, vobj):
-        self.Object = vobj.Object
-
-    def getIcon(self):
-        from .gui import icon_path
-
-        obj = getattr(self, "Object", None)
-        stale = obj is not None and getattr(obj, "NeedsRemesh", False)
-        return icon_path("BisectMesh_MeshStale.svg" if stale else "BisectMesh_Mesh.svg")
-
-    def setEdit(self, vobj, mode=0):
-        if mode != 0:
-            return None  # other edit modes (Transform, ...) stay FreeCAD's
-        import FreeCADGui
-        from .gui import mesh_panel
-
-        obj = vobj.Object
-        if obj.Part is None:
-            import FreeCAD
-
-            FreeCAD.Console.PrintError("BisectMesh: %s has no Part to mesh; set its Part property\n" % obj.Label)
-            return False
-        FreeCADGui.Control.showDialog(mesh_panel.MeshPanel(obj.Part, mesh_obj=obj))
-        return True
-
-    def unsetEdit(self, vobj, mode=0):
-        if mode != 0:
-            return None
-        import FreeCADGui
-
-        FreeCADGui.Control.closeDialog()
-        return True
-
-    def doubleClicked(self, vobj):
-        import FreeCADGui
-
-        gui_doc = FreeCADGui.getDocument(vobj.Object.Document.Name)
-        if gui_doc.getInEdit() or FreeCADGui.Control.activeDialog():
-            import FreeCAD
-
-            FreeCAD.Console.PrintWarning("BisectMesh: close the open task dialog first\n")
-            return True
-        gui_doc.setEdit(vobj.Object.Name, 0)
-        return True
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
 
 
 def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints=True, optimize=3,
@@ -463,6 +406,8 @@ def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints
     obj.OptimizePasses = optimize
     obj.SmoothPasses = smooth
     if FreeCAD.GuiUp:
+        from .gui.view_provider import ViewProviderMeshObject
+
         ViewProviderMeshObject(obj.ViewObject)
         if analysis is None:
             analysis = _active_analysis(doc)
@@ -480,3 +425,14 @@ def _active_analysis(doc):
     if analysis is not None and analysis.Document is doc:
         return analysis
     return None
+
+
+def __getattr__(name):
+    # Documents saved before the view provider moved to gui/view_provider.py name it
+    # bisectmesh.mesh_object.ViewProviderMeshObject: resolved here on first use, so that this
+    # module imports nothing of the GUI.
+    if name == "ViewProviderMeshObject":
+        from .gui.view_provider import ViewProviderMeshObject
+
+        return ViewProviderMeshObject
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))

@@ -17,11 +17,7 @@ from PySide import QtCore, QtGui
 from . import icon_path
 from .. import mesh_object
 
-# the generator's stages, as the thesis's tables name them
-_STAGES = (("init_geom", "Init geom"), ("bisect", "Bisect"), ("gen_nodes", "Gen. nodes"),
-           ("gen_tets", "Gen. tets"), ("optimize", "Optimize"), ("total", "Total"))
 _DEFAULT_ELEMENTS = mesh_object.DEFAULT_ELEMENTS
-_VOLUME_PER_TET = 0.1179  # volume of the regular tetrahedron of unit edge, 1/(6 sqrt 2)
 
 # Workers whose panel closed before they finished: kept referenced until they stop, because a
 # QThread object destroyed while its thread runs takes FreeCAD down with it.
@@ -398,7 +394,7 @@ class MeshPanel:
         self.counts.setText(text)
         times = result.get("times") or {}
         cells = ["<td>%s</td><td align='right'>%.3f s</td>" % (label, times[key])
-                 for key, label in _STAGES if key in times]
+                 for key, label in mesh_object.STAGES if key in times]
         rows = "".join("<tr>%s</tr>" % "<td width='16'></td>".join(cells[i:i + 2])
                        for i in range(0, len(cells), 2))
         self.times.setText("<b>Stage times</b> (generator)<table cellspacing='2'>%s</table>" % rows
@@ -529,10 +525,13 @@ class MeshPanel:
 
 
 def _size_for(volume, elements):
-    """The edge length of regular tetrahedra that fill ``volume`` with ``elements`` of them."""
+    """The element size that asks for about ``elements`` tetrahedra in ``volume``, to the panel's
+    three decimals (arguments.spacing_for: the one formula)."""
+    from ..arguments import spacing_for
+
     if volume <= 0:
         return 1.0
-    return round((volume / (elements * _VOLUME_PER_TET)) ** (1.0 / 3.0), 3)
+    return round(spacing_for(volume, elements), 3)
 
 
 def _resolution_text(resolution):
