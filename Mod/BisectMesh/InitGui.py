@@ -2,8 +2,20 @@
 #
 # FreeCAD runs this file through exec(); names defined at its top level are not visible inside
 # the methods below, so each method imports what it needs.
+#
+# The commands are registered here, at start-up, not in Initialize(): they exist in every
+# workbench from the start, and the FEM workbench gets a BisectMesh toolbar and its Mesh menu the
+# BisectMesh commands (bisectmesh/gui/commands.py says how).
 
+import FreeCAD
 import FreeCADGui
+
+try:
+    from bisectmesh.gui import commands as _bisectmesh_commands
+
+    _bisectmesh_commands.set_up_at_start()
+except Exception as _err:  # FreeCAD must start whatever happens here
+    FreeCAD.Console.PrintError("BisectMesh: the commands could not be registered: %s\n" % _err)
 
 
 class BisectMeshWorkbench(FreeCADGui.Workbench):
@@ -18,13 +30,10 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = icon_path("BisectMesh.svg")
 
     def Initialize(self):
-        from bisectmesh.gui import command_mesh, command_quality
+        from bisectmesh.gui import commands
 
-        command_mesh.register()
-        command_quality.register()
-        commands = [command_mesh.COMMAND_NAME, command_quality.COMMAND_NAME]
-        self.appendToolbar("BisectMesh", commands)
-        self.appendMenu("&BisectMesh", commands)
+        self.appendToolbar("BisectMesh", list(commands.COMMANDS))
+        self.appendMenu("&BisectMesh", list(commands.COMMANDS))
 
     def Activated(self):
         pass
@@ -33,12 +42,14 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         pass
 
     def ContextMenu(self, recipient):
-        from bisectmesh.gui import command_mesh, command_quality
+        from bisectmesh.gui import command_mesh, command_quality, command_remesh
 
         if recipient != "Tree":
             return
         if command_mesh.selected_solid() is not None:
             self.appendContextMenu("", [command_mesh.COMMAND_NAME])
+        if command_remesh.selected_mesh_object() is not None:
+            self.appendContextMenu("", [command_remesh.COMMAND_NAME])
         if command_quality.selected_fem_mesh() is not None:
             self.appendContextMenu("", [command_quality.COMMAND_NAME])
 

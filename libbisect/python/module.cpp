@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -87,7 +88,36 @@ py::dict mesh_to_dict(const TetMesh& m) {
 }
 
 // One JSON writer (quality_json) serves the CLI and Python alike, so both report the same keys.
-py::object json_loads(const std::string& s) { return py::module_::import("json").attr("loads")(s); }
+// Its numbers are written with operator<<, which spells a non-finite value nan or inf (a stage
+// that timed nothing, the quality of an empty mesh); Python's json reads NaN and Infinity, so
+// those tokens (outside strings) are respelled: a report never fails to load.
+py::object json_loads(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  bool in_string = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < s.size()) out += s[++i];
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    const bool word_start = i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1]));
+    if (word_start && s.compare(i, 3, "nan") == 0) {
+      if (!out.empty() && out.back() == '-') out.pop_back();  // -nan: JSON has no negative NaN
+      out += "NaN";
+      i += 2;
+    } else if (word_start && s.compare(i, 3, "inf") == 0) {
+      out += "Infinity";
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return py::module_::import("json").attr("loads")(out);
+}
 
 std::string violation_kind_name(ViolationKind k) { return to_string(k); }
 

@@ -15,10 +15,12 @@ namespace {
 
 std::string show(const py::handle& v) { return py::repr(v).cast<std::string>(); }
 
+// Python's promise (README): a wrong type raises TypeError, a bad value ValueError (InputError),
+// each naming the argument.
 // An integer argument (a bool is not one) within [lo, hi].
 std::int64_t integer(const py::handle& v, const char* name, std::int64_t lo, std::int64_t hi) {
   if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v))
-    throw InputError(std::string(name) + " must be a whole number (got " + show(v) + ")");
+    throw py::type_error(std::string(name) + " must be a whole number (got " + show(v) + ")");
   long long x = 0;
   try {
     x = v.cast<long long>();
@@ -33,14 +35,14 @@ std::int64_t integer(const py::handle& v, const char* name, std::int64_t lo, std
 // A finite number >= 0 (0 meaning "not set" where the option says so).
 double number(const py::handle& v, const char* name) {
   if (py::isinstance<py::bool_>(v) || !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)))
-    throw InputError(std::string(name) + " must be a number (got " + show(v) + ")");
+    throw py::type_error(std::string(name) + " must be a number (got " + show(v) + ")");
   const double x = v.cast<double>();
   if (!std::isfinite(x) || x < 0) throw InputError(std::string(name) + " must be a finite number, 0 or more (got " + show(v) + ")");
   return x;
 }
 
 bool flag(const py::handle& v, const char* name) {
-  if (!py::isinstance<py::bool_>(v)) throw InputError(std::string(name) + " must be True or False (got " + show(v) + ")");
+  if (!py::isinstance<py::bool_>(v)) throw py::type_error(std::string(name) + " must be True or False (got " + show(v) + ")");
   return v.cast<bool>();
 }
 
@@ -48,7 +50,7 @@ bool flag(const py::handle& v, const char* name) {
 std::vector<Index> entities(const py::handle& v, const std::string& prefix, const std::string& where) {
   std::vector<Index> out;
   if (v.is_none()) return out;
-  if (py::isinstance<py::str>(v)) throw InputError(where + ": " + prefix + "s must be a list (got " + show(v) + ")");
+  if (py::isinstance<py::str>(v) || !py::isinstance<py::sequence>(v)) throw py::type_error(where + ": " + prefix + "s must be a list (got " + show(v) + ")");
   for (const py::handle item : v.cast<py::sequence>()) {
     std::int64_t k = 0;
     if (py::isinstance<py::str>(item)) {
@@ -99,7 +101,7 @@ GenerateOptions generate_options(const py::dict& kwargs) {
   const py::dict known = default_options();
   for (const auto& [key, value] : kwargs) {
     const std::string k = key.cast<std::string>();
-    if (!known.contains(key)) throw InputError("unknown option " + k);
+    if (!known.contains(key)) throw py::type_error("unknown option " + k);
     if (value.is_none()) continue;  // None: the default
     if (k == "elements") o.sizing.elements = integer(value, "elements", 0, std::int64_t(1) << 40);
     else if (k == "size") o.sizing.size = number(value, "size");
@@ -122,11 +124,11 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "size_grading") o.sizing.size_grading = number(value, "size_grading");
     else if (k == "regions") {
       if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))
-        throw InputError("regions must be a list of dicts {size, faces, edges, vertices, solids} (got " + show(value) + ")");
+        throw py::type_error("regions must be a list of dicts {size, faces, edges, vertices, solids} (got " + show(value) + ")");
       int r = 0;
       for (const py::handle item : value.cast<py::sequence>()) {
         const std::string where = "regions[" + std::to_string(r++) + "]";
-        if (!py::isinstance<py::dict>(item)) throw InputError(where + " must be a dict {size, faces, edges, vertices, solids}");
+        if (!py::isinstance<py::dict>(item)) throw py::type_error(where + " must be a dict {size, faces, edges, vertices, solids}");
         const py::dict d = item.cast<py::dict>();
         for (const auto& [rk, rv] : d) {
           const std::string name = rk.cast<std::string>();
@@ -145,6 +147,9 @@ GenerateOptions generate_options(const py::dict& kwargs) {
       }
     }
   }
+  // Python names its arguments: not the CLI's -n or -s, which the pipeline's own message names
+  if (o.sizing.elements <= 0 && o.sizing.size <= 0)
+    throw InputError("give elements (a positive number of tetrahedra) or size (a positive element size)");
   if (o.sizing.curvature_elements > 0 && o.sizing.curvature_elements < 3)
     throw InputError("curvature_elements must be 0 (no bound) or at least 3 (got " + std::to_string(o.sizing.curvature_elements) + ")");
   if (!(o.sizing.size_grading > 0)) throw InputError("size_grading must be positive");

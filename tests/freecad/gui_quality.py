@@ -75,6 +75,18 @@ def run():
     pixmap = panel.histograms.pixmap()
     check(pixmap is not None and not pixmap.isNull() and pixmap.height() > 200, "histogram picture shown")
 
+    # the report view gets plain text: the mesh's label, never the panel's rich-text title
+    report_views = [w for w in FreeCADGui.getMainWindow().findChildren(QtGui.QTextEdit)
+                    if w.metaObject().className().endswith("ReportOutput")]
+    if not report_views:
+        log("skip  report view not found: its text is not checked")
+    else:
+        text = report_views[0].toPlainText()
+        # (the report view may put a time stamp before each line)
+        line = [l for l in text.splitlines() if "Mesh quality of " in l]
+        check(line and line[-1].endswith("Mesh quality of %s:" % mesh.Label) and "<b>" not in text and "<br>" not in text,
+              "the report view's line is plain text: %r" % (line[-1:] or text[-300:]))
+
     console = FreeCADGui.getMainWindow().findChild(QtGui.QPlainTextEdit, "Python console")
     if console is None:
         log("skip  Python console not found: the recorded commands are not checked")

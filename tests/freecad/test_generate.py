@@ -103,7 +103,7 @@ class GenerateBindingTest(unittest.TestCase):
             core().generate(nodes, bad, regions, elements=1000)
         with self.assertRaisesRegex(core().InputError, "region 0 is not closed"):
             core().generate(nodes, faces, [regions[0][:5]], elements=1000)
-        with self.assertRaisesRegex(core().InputError, "no required number of elements"):
+        with self.assertRaisesRegex(core().InputError, r"give elements \(.*\) or size"):  # Python names, not -n/-s
             core().generate(nodes, faces, regions)
         with self.assertRaisesRegex(core().InputError, r"order must lie between 1 and 2 \(got 3\)"):
             core().generate(nodes, faces, regions, elements=1000, order=3)

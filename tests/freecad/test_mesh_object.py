@@ -1,11 +1,14 @@
 """The BisectMesh FEM mesh object (bisectmesh.make_mesh_object), headless, as a macro user drives
-it: a recompute meshes the Part, changing TargetElements changes the mesh, bad input is a
-recompute error naming what is wrong, the object joins an analysis, and it survives saving and
-reopening the document (properties, FemMesh, a recompute afterwards)."""
+it: bisectmesh.remesh(obj) meshes the Part, a recompute never meshes but marks the mesh as
+needing a re-mesh when the Part or a parameter changes, changing TargetElements and re-meshing
+changes the mesh, bad properties are one line naming the object (no recompute error, no
+traceback) and mark the mesh, the object joins an analysis, and it survives saving and reopening
+the document (properties, FemMesh, the fingerprint of its inputs)."""
 
 import os
 import shutil
 import tempfile
+import time
 import unittest
 
 import FreeCAD
@@ -42,12 +45,18 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(obj.NodeCount, femmesh.NodeCount)
         return report
 
-    def test_recompute_gives_a_valid_tetra10_mesh(self):
+    def test_remesh_gives_a_valid_tetra10_mesh(self):
         obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=3000)
         self.assertEqual(obj.TypeId, "Fem::FemMeshObjectPython")
         self.assertTrue(mesh_object.is_mesh_object(obj))
-        self.assertEqual(obj.FemMesh.VolumeCount, 0)  # meshing is the recompute's job
         self.doc.recompute()
+        self.assertEqual(obj.FemMesh.VolumeCount, 0)  # a recompute never meshes ...
+        self.assertTrue(obj.NeedsRemesh)              # ... it says the mesh is missing
+        self.assertEqual(obj.MeshStatus, "not meshed yet")
+        result = bisectmesh.remesh(obj)
+        self.assertEqual(result["tets"], obj.FemMesh.VolumeCount)
+        self.assertFalse(obj.NeedsRemesh)
+        self.assertEqual(obj.MeshStatus, "")
         report = self.assert_valid_mesh(obj, order=2)
         # the mesh fills the solid: tetra10 mid-nodes lie on the cylinder, the corners' facets cut it
         volume = fc_helpers.reference_measures(fc_helpers.fc_elements(obj.FemMesh)[1])["volume"].sum()
@@ -65,15 +74,62 @@ class MeshObjectTest(unittest.TestCase):
         self.assertIn("gen_tets", stored["times"])
         # results are outputs: setting them does not ask for another meshing
         self.assertEqual(obj.State, ["Up-to-date"])
+        self.doc.recompute()
+        self.assertFalse(obj.NeedsRemesh)
+
+    def test_recompute_never_meshes_but_marks_the_mesh(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=1500, order=1)
+        bisectmesh.remesh(obj)
+        tets = obj.FemMesh.VolumeCount
+        # a parameter changes: the recompute is quick and leaves the mesh as it was, marked
+        obj.TargetElements = 40000
+        start = time.perf_counter()
+        self.doc.recompute()
+        seconds = time.perf_counter() - start
+        self.assertLess(seconds, 0.5, "a recompute took %.2f s: it meshed" % seconds)
+        self.assertEqual(obj.FemMesh.VolumeCount, tets)
+        self.assertTrue(obj.NeedsRemesh)
+        self.assertIn("changed", obj.MeshStatus)
+        self.assertTrue(obj.isValid())  # not a recompute error
+        # back to the meshed value: the mesh matches its inputs again
+        obj.TargetElements = 1500
+        self.doc.recompute()
+        self.assertFalse(obj.NeedsRemesh)
+        # an upstream geometry edit: the Part's shape changes, the mesh is marked, not re-meshed
+        moved = Part.makeBox(20, 10, 10, FreeCAD.Vector(5, 0, 0))
+        self.part.Shape = moved
+        self.doc.recompute()
+        self.assertEqual(obj.FemMesh.VolumeCount, tets)
+        self.assertAlmostEqual(obj.FemMesh.BoundBox.XMax, 20.0, places=6)
+        self.assertTrue(obj.NeedsRemesh)
+        bisectmesh.remesh(obj)
+        self.assertFalse(obj.NeedsRemesh)
+        self.assertAlmostEqual(obj.FemMesh.BoundBox.XMax, 25.0, places=6)
+        # the view resolution is an input when UseResolutionHints is on (headless: the Part
+        # preferences hold it)
+        prefs = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Part")
+        old = prefs.GetFloat("MeshDeviation", 0.5)
+        try:
+            prefs.SetFloat("MeshDeviation", old / 2)
+            obj.touch()
+            self.doc.recompute()
+            self.assertTrue(obj.NeedsRemesh)
+        finally:
+            prefs.SetFloat("MeshDeviation", old)
 
     def test_target_elements_changes_the_count(self):
         obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2000, order=1)
-        self.doc.recompute()
+        bisectmesh.remesh(obj)
         self.assert_valid_mesh(obj, order=1)
         coarse = obj.FemMesh.VolumeCount
         obj.TargetElements = 12000
         self.assertIn("Touched", obj.State)
         self.doc.recompute()
+        self.assertEqual(obj.FemMesh.VolumeCount, coarse)
+        progress = []
+        bisectmesh.remesh(obj, progress=progress.append)
+        self.assertEqual(progress[-1], 1.0)
+        self.assertEqual(progress, sorted(progress))
         self.assert_valid_mesh(obj, order=1)
         fine = obj.FemMesh.VolumeCount
         self.assertGreater(fine, 2.5 * coarse, (coarse, fine))
@@ -86,46 +142,69 @@ class MeshObjectTest(unittest.TestCase):
         self.assertAlmostEqual(obj.ElementSize.Value, 1.5)
         self.assertFalse(obj.UseResolutionHints)
         self.assertEqual((obj.OptimizePasses, obj.SmoothPasses), (1, 0))
-        self.doc.recompute()
+        bisectmesh.remesh(obj)
         self.assert_valid_mesh(obj, order=2)
         # the spacing is about the element size: about V / (0.1179 s^3) tetrahedra, within a factor 3
         expected = self.part.Shape.Volume / (0.1179 * 1.5 ** 3)
         self.assertGreater(obj.ElementCount, expected / 3)
         self.assertLess(obj.ElementCount, expected * 3)
 
-    def test_bad_input_is_a_recompute_error(self):
+    def test_bad_properties_are_one_line_and_mark_the_mesh(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=1000, order=1)
+        bisectmesh.remesh(obj)
+        tets = obj.FemMesh.VolumeCount
+
+        def recompute_says(*words):
+            self.doc.recompute()
+            self.assertTrue(obj.isValid(), "a recompute error: %s" % obj.getStatusString())
+            self.assertTrue(obj.NeedsRemesh)
+            self.assertNotIn("\n", obj.MeshStatus)
+            self.assertNotIn("Traceback", obj.MeshStatus)
+            for word in words:
+                self.assertIn(word, obj.MeshStatus)
+            self.assertEqual(obj.FemMesh.VolumeCount, tets)  # the stale mesh stays, marked
+
+        import Sketcher
+
+        sketch = self.doc.addObject("Sketcher::SketchObject", "Sketch")
+        sketch.addGeometry(Part.LineSegment(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(5, 0, 0)))
+        obj.Part = sketch
+        recompute_says(obj.Label, "Sketch", "no solid")
+        with self.assertRaisesRegex(ValueError, "Sketch"):
+            bisectmesh.remesh(obj)
+
         face = self.doc.addObject("Part::Feature", "JustAFace")
         face.Shape = Part.makeBox(5, 5, 5).Faces[0]
-        obj = bisectmesh.make_mesh_object(self.doc, face, elements=1000)
-        self.doc.recompute()
-        self.assertFalse(obj.isValid())
-        self.assertIn("JustAFace", obj.getStatusString())
-        self.assertIn("no solid", obj.getStatusString())
-        self.assertEqual(obj.FemMesh.VolumeCount, 0)
+        obj.Part = face
+        recompute_says("JustAFace", "no solid")
 
-        # an open shell made into a "solid": the mesher names the solid
+        obj.Part = None
+        recompute_says("Part")
+
+        obj.Part = self.part
+        obj.TargetElements = -5
+        recompute_says(obj.Label, "TargetElements")
+        obj.TargetElements = 0
+        obj.ElementSize = 0.0
+        recompute_says("ElementSize")
+        obj.TargetElements = 1000
+        obj.OptimizePasses = -1
+        recompute_says("OptimizePasses")
+        obj.OptimizePasses = 3
+        self.doc.recompute()
+        self.assertFalse(obj.NeedsRemesh)  # the inputs of the mesh on screen again
+
+        # an open shell made into a "solid": remesh names the part and the solid
         open_box = self.doc.addObject("Part::Feature", "OpenBox")
         open_box.Shape = Part.Solid(Part.Shell(Part.makeBox(5, 5, 5).Faces[:5]))
         obj.Part = open_box
         self.doc.recompute()
-        self.assertFalse(obj.isValid())
-        message = obj.getStatusString()
-        self.assertIn("OpenBox", message)
-        self.assertRegex(message, r"Solid1 is not closed: Edge\d+ bounds only Face\d")
-
-        obj.Part = None
-        self.doc.recompute()
-        self.assertIn("Part", obj.getStatusString())
-
-        # and back to a good part: the object recovers
-        obj.Part = self.part
-        obj.TargetElements = 0
-        obj.ElementSize = 0.0
-        self.doc.recompute()
-        self.assertIn("ElementSize", obj.getStatusString())
-        obj.TargetElements = 1500
-        self.doc.recompute()
-        self.assert_valid_mesh(obj, order=2)
+        self.assertTrue(obj.NeedsRemesh)
+        with self.assertRaisesRegex(ValueError, r"OpenBox: .*Solid1 is not closed: Edge\d+ bounds only Face\d"):
+            bisectmesh.remesh(obj)
+        self.assertTrue(obj.NeedsRemesh)
+        with self.assertRaises(TypeError):
+            bisectmesh.remesh(self.part)
 
         with self.assertRaises(ValueError):
             bisectmesh.make_mesh_object(self.doc, self.part, elements=100, size=1.0)
@@ -149,14 +228,15 @@ class MeshObjectTest(unittest.TestCase):
         obj.Proxy.adopt(obj, femmesh, result)
         self.assertEqual(obj.State, ["Up-to-date"])
         self.doc.recompute()
+        self.assertFalse(obj.NeedsRemesh)
         self.assertEqual(obj.FemMesh.NodeCount, femmesh.NodeCount)
         self.assertEqual(obj.FemMesh.BoundBox.XMax, 1000.0)
         self.assertEqual(obj.ElementCount, femmesh.VolumeCount)
-        # and a change of the Part re-meshes as usual
+        # the same geometry in a new shape object is the same input: still up to date
         self.part.Shape = self.part.Shape.copy()
         self.doc.recompute()
-        self.assertTrue(obj.isValid(), obj.getStatusString())
-        self.assertAlmostEqual(obj.FemMesh.BoundBox.XMax, 20.0, places=6)
+        self.assertFalse(obj.NeedsRemesh)
+        self.assertEqual(obj.FemMesh.BoundBox.XMax, 1000.0)
 
     def test_save_and_reopen(self):
         import ObjectsFem
@@ -164,7 +244,7 @@ class MeshObjectTest(unittest.TestCase):
         analysis = ObjectsFem.makeAnalysis(self.doc, "Analysis")
         obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2500, order=2, use_hints=False,
                                           optimize=2, smooth=1, analysis=analysis)
-        self.doc.recompute()
+        bisectmesh.remesh(obj)
         self.assert_valid_mesh(obj, order=2)
         counts = (obj.FemMesh.NodeCount, obj.FemMesh.VolumeCount, obj.FemMesh.FaceCount)
         groups = group_names(obj.FemMesh)
@@ -188,13 +268,49 @@ class MeshObjectTest(unittest.TestCase):
             self.assertEqual(group_names(obj.FemMesh), groups)
             self.assertIn(obj, self.doc.getObject(analysis_name).Group)
             self.assertNotIn("Touched", obj.State)
-            # a recompute after the reload meshes again
+            # the fingerprint survives: a recompute after the reload finds the mesh current ...
+            self.doc.getObject(part_name).touch()
+            self.doc.recompute()
+            self.assertFalse(obj.NeedsRemesh, obj.MeshStatus)
+            # ... and a change marks it; remesh meshes
             obj.TargetElements = 6000
             self.doc.recompute()
+            self.assertTrue(obj.NeedsRemesh)
+            bisectmesh.remesh(obj)
             self.assert_valid_mesh(obj, order=2)
             self.assertGreater(obj.FemMesh.VolumeCount, 1.5 * counts[1])
         finally:
             shutil.rmtree(folder, ignore_errors=True)
+
+    def test_design_one_way_imports_one_table_one_formula(self):
+        import subprocess
+        import sys
+
+        from bisectmesh import arguments
+        from bisectmesh.gui import view_provider
+
+        # documents saved before the view provider moved to gui/ still find it
+        self.assertIs(mesh_object.ViewProviderMeshObject, view_provider.ViewProviderMeshObject)
+        with self.assertRaises(AttributeError):
+            mesh_object.NoSuchThing
+        # mesh_object imports nothing of the GUI: a plain interpreter without FreeCAD loads it
+        mod = os.path.dirname(os.path.dirname(os.path.abspath(bisectmesh.__file__)))
+        code = ("import sys; sys.path.insert(0, %r); import bisectmesh.mesh_object; "
+                "print(sorted(m for m in sys.modules if m.startswith('bisectmesh.gui') or m == 'FreeCADGui'))" % mod)
+        out = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, timeout=60)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertEqual(out.stdout.strip(), "[]")
+        # one spacing formula: the element size the panel proposes asks for the count it names
+        volume = self.part.Shape.Volume
+        size = arguments.spacing_for(volume, 5000)
+        self.assertAlmostEqual(arguments.elements_for(volume, size), 5000.0, places=6)
+        self.assertAlmostEqual(arguments.VOLUME_PER_TET, 0.11785113, places=8)  # 1/(6 sqrt 2)
+        # one table of stage names: the object's summary and the panel read the same one
+        result = {"tets": 10, "order": 1, "nodes": 8, "seconds": 1.0,
+                  "times": {key: 0.5 for key, _ in mesh_object.STAGES}, "quality": {}}
+        line = mesh_object.summary(result).splitlines()[1]
+        for _, label in mesh_object.STAGES:
+            self.assertIn(label.lower() + " 0.500", line)
 
     def test_command_and_panel_modules(self):
         from xml.etree import ElementTree
@@ -213,6 +329,10 @@ class MeshObjectTest(unittest.TestCase):
         self.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg")
         self.assertEqual(root.get("viewBox"), "0 0 64 64")
         self.assertTrue(hasattr(mesh_panel.MeshPanel, "getStandardButtons"))
+        from bisectmesh import arguments
+
+        self.assertEqual(mesh_panel._size_for(1717.0, 5000), round(arguments.spacing_for(1717.0, 5000), 3))
+        self.assertFalse(hasattr(mesh_panel, "_STAGES"))
 
 
 if __name__ == "__main__":

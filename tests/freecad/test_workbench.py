@@ -20,6 +20,61 @@ def workbench_dir():
     return os.path.dirname(os.path.dirname(os.path.abspath(bisectmesh.__file__)))
 
 
+def repository_dir():
+    """The repository's root: tests/freecad/../.."""
+    here = os.environ.get("BISECTMESH_TEST_DIR") or os.path.dirname(os.path.abspath(__file__))
+    return os.path.normpath(os.path.join(here, os.pardir, os.pardir))
+
+
+def check_package_xml(test, path):
+    """Checks the package.xml at ``path`` as FreeCAD 0.20 loads it (its start-up scripts run
+    Init.py and InitGui.py from the workbench's <subdirectory>, relative to package.xml, and take
+    the workbench icon relative to that folder) and as the Addon Manager's developer checks
+    (AddonManager.validate_package_xml) want it: name, version, date, description, maintainer
+    with an email, licence, a repository URL with its branch, a readme URL, an icon, and the
+    workbench's class name. Returns the workbench's metadata."""
+    import datetime
+    import re
+
+    metadata = FreeCAD.Metadata(path)
+    here = os.path.dirname(path)
+    test.assertEqual(metadata.Name, "BisectMesh")
+    test.assertEqual(metadata.Version, bisectmesh.__version__)
+    test.assertTrue(metadata.Description)
+    # FreeCAD 0.20's Metadata has no Date: read the element itself
+    root = ElementTree.parse(path).getroot()
+    namespace = {"p": "https://wiki.freecad.org/Package_Metadata"}
+    date = root.find("p:date", namespace)
+    test.assertIsNotNone(date, "package.xml has no <date>")
+    datetime.date.fromisoformat(date.text.strip())  # YYYY-MM-DD, a real day
+    test.assertEqual(metadata.License[0]["name"], "LGPL-2.1-or-later")
+    test.assertTrue(metadata.Maintainer)
+    for maintainer in metadata.Maintainer:
+        test.assertTrue(maintainer["name"])
+        test.assertRegex(maintainer["email"], r"^[^@\s]+@[^@\s]+\.[a-z]+$")
+    urls = {url["type"]: url for url in metadata.Urls}
+    test.assertIn("repository", urls)
+    test.assertRegex(urls["repository"]["location"], r"^https://github\.com/[\w.-]+/[\w.-]+$")
+    test.assertTrue(urls["repository"]["branch"], "the repository URL needs its branch")
+    test.assertIn("readme", urls)
+    test.assertTrue(os.path.isfile(os.path.join(here, metadata.Icon)), metadata.Icon)
+    workbenches = metadata.Content["workbench"]
+    test.assertEqual(len(workbenches), 1)
+    workbench = workbenches[0]
+    test.assertEqual(workbench.Classname, "BisectMeshWorkbench")
+    test.assertEqual(workbench.FreeCADMin, "0.20.0")
+    test.assertTrue(metadata.supportsCurrentFreeCAD() and workbench.supportsCurrentFreeCAD())
+    # FreeCAD's own rule (FreeCADInit.py, FreeCADGuiInit.py): the workbench's name when empty
+    folder = os.path.join(here, (workbench.Subdirectory or workbench.Name).replace("/", os.path.sep))
+    for name in ("Init.py", "InitGui.py"):
+        test.assertTrue(os.path.isfile(os.path.join(folder, name)), "%s not in %s" % (name, folder))
+    with open(os.path.join(folder, "InitGui.py")) as source:
+        test.assertIn("class %s(" % workbench.Classname, source.read())
+    test.assertTrue(os.path.isfile(os.path.join(folder, workbench.Icon)), workbench.Icon)
+    test.assertTrue(re.match(r"^\d+\.\d+\.\d+$", metadata.Version))
+    return workbench
+
+
 class WorkbenchFilesTest(unittest.TestCase):
 
     def test_package_is_the_one_under_test(self):
@@ -43,28 +98,27 @@ class WorkbenchFilesTest(unittest.TestCase):
         self.assertIn("class BisectMeshWorkbench", text)
         self.assertIn("addWorkbench(BisectMeshWorkbench())", text)
 
-    def test_package_xml(self):
+    def test_package_xml_staged_beside_initgui(self):
+        # The copy cmake stages (and installs) sits beside InitGui.py: FreeCAD reads it at start-up
+        # and runs Init.py and InitGui.py from <subdirectory> relative to it.
         path = os.path.join(workbench_dir(), "package.xml")
         if not os.path.isfile(path):
             self.skipTest("package.xml is staged beside the workbench only in the build tree")
-        metadata = FreeCAD.Metadata(path)
-        self.assertEqual(metadata.Name, "BisectMesh")
-        self.assertEqual(metadata.Version, "0.1.0")
-        self.assertEqual(metadata.License[0]["name"], "LGPL-2.1-or-later")
-        self.assertEqual(metadata.Maintainer[0]["name"], "BisectMesh developers")
-        workbenches = metadata.Content["workbench"]
-        self.assertEqual(len(workbenches), 1)
-        workbench = workbenches[0]
-        self.assertEqual(workbench.Classname, "BisectMeshWorkbench")
-        self.assertEqual(workbench.Subdirectory, "./")
-        self.assertEqual(workbench.FreeCADMin, "0.20.0")
-        for icon in (metadata.Icon, workbench.Icon):
-            self.assertTrue(os.path.isfile(os.path.join(workbench_dir(), icon)), icon)
+        workbench = check_package_xml(self, path)
+        self.assertEqual(os.path.normpath(workbench.Subdirectory), ".")
+
+    def test_package_xml_of_the_repository(self):
+        # The Addon Manager clones the repository and reads the package.xml at its root.
+        path = os.path.join(repository_dir(), "package.xml")
+        if not os.path.isfile(path):
+            self.skipTest("no repository beside the tests (%s)" % path)
+        workbench = check_package_xml(self, path)
+        self.assertEqual(os.path.normpath(workbench.Subdirectory), os.path.join("Mod", "BisectMesh"))
 
     def test_icons_are_svg(self):
         from bisectmesh.gui import icon_path
 
-        for name in ("BisectMesh.svg", "BisectMesh_Quality.svg"):
+        for name in ("BisectMesh.svg", "BisectMesh_Quality.svg", "BisectMesh_Mesh.svg", "BisectMesh_MeshStale.svg"):
             path = icon_path(name)
             self.assertTrue(os.path.isfile(path), name)
             root = ElementTree.parse(path).getroot()

@@ -5,6 +5,8 @@ The macro API (the workbench's commands are thin wrappers over it)::
     import bisectmesh
     mesh = bisectmesh.mesh_shape(part_obj.Shape, elements=20000, order=2,
                                  resolution=bisectmesh.view_resolution(part_obj))   # a Fem.FemMesh
+    obj = bisectmesh.make_mesh_object(doc, part_obj, elements=20000)   # a document object ...
+    bisectmesh.remesh(obj)                                   # ... meshed (a recompute never does)
     report = bisectmesh.quality(mesh)   # of a Fem.FemMesh or a FEM mesh object
     report["valid"], report["gamma_mean"], report["measures"]["gamma"]["histogram"]
 
@@ -17,7 +19,7 @@ __version__ = "0.1.0"
 
 MEASURES = ("dihedral_min", "dihedral_max", "solid_angle_min", "gamma", "alpha")
 
-from .mesh_object import make_mesh_object  # noqa: E402,F401  (imports FreeCAD only when called)
+from .mesh_object import make_mesh_object, remesh  # noqa: E402,F401  (import FreeCAD only when called)
 
 
 def core():
@@ -42,8 +44,14 @@ def mesh_shape(shape, elements=None, size=None, **options):
 
 def view_resolution(obj):
     """{"deviation": percent, "angular_deflection": degrees} of a Part object's view (FreeCAD's
-    defaults without a GUI); pass it as ``mesh_shape(..., resolution=...)``."""
+    defaults without a GUI); pass it as ``mesh_shape(..., resolution=...)``. TypeError unless
+    ``obj`` is a document object with a Shape."""
+    import FreeCAD
+
     from .shape_mesher import view_resolution as read
+
+    if not isinstance(obj, FreeCAD.DocumentObject) or not hasattr(obj, "Shape"):
+        raise TypeError("obj must be a document object with a Shape, not %s" % type(obj).__name__)
 
     return read(obj)
 
@@ -72,6 +80,10 @@ def element_quality(femmesh, arrays=None):
     ``tet_ids`` (FreeCAD element ids). Measures: volume (of the positively oriented element;
     negative when FreeCAD's element is inverted), dihedral_min, dihedral_max (degrees),
     solid_angle_min (sr), gamma, alpha."""
+    from .femmesh_arrays import MeshArrays
+
+    if arrays is not None and not isinstance(arrays, MeshArrays):
+        raise TypeError("arrays must be the MeshArrays of mesh_arrays(femmesh) or None, not %s" % type(arrays).__name__)
     arrays = mesh_arrays(femmesh) if arrays is None else arrays
     return arrays.tet_ids, dict(core().element_quality(arrays.nodes, arrays.tets))
 
@@ -95,8 +107,12 @@ def quality(femmesh, validate=True, per_element=False):
     ``violations``       [{kind, ids, message}], ids being FreeCAD node or element ids
     ``per_element``      {ids: [element ids], volume: [...], dihedral_min: [...], ...}
 
-    Raises ValueError when the mesh has no tetrahedra.
+    Raises TypeError for arguments of the wrong type, ValueError when the mesh has no tetrahedra.
     """
+    from . import arguments
+
+    arguments.flag("validate", validate)
+    arguments.flag("per_element", per_element)
     arrays = mesh_arrays(femmesh)
     if len(arrays.tets) == 0:
         other = ", ".join("%d %s" % (n, k) for k, n in sorted(arrays.skipped.items()))
@@ -131,7 +147,9 @@ def _violations(c, arrays):
 
 
 def format_report(report):
-    """A few lines of text for the report view or a console."""
+    """A few lines of text for the report view or a console, of a report of :func:`quality`."""
+    if not isinstance(report, dict) or "tets" not in report or "measures" not in report:
+        raise TypeError("report must be a dict returned by bisectmesh.quality, not %s" % type(report).__name__)
     lines = ["%d tetrahedra (order %d), %d nodes" % (report["tets"], report["order"], report["nodes"])]
     if report.get("skipped_volumes"):
         lines.append("not tetrahedra, skipped: " + ", ".join(

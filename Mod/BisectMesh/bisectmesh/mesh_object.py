@@ -1,18 +1,29 @@
-"""The BisectMesh FEM mesh document object: a ``Fem::FemMeshObjectPython`` that meshes the solids
-of a Part object with :func:`bisectmesh.shape_mesher.mesh_shape` whenever it is recomputed.
+"""The BisectMesh FEM mesh document object: a ``Fem::FemMeshObjectPython`` that holds a mesh of
+the solids of a Part object, made by :func:`bisectmesh.shape_mesher.mesh_shape`.
 
     obj = bisectmesh.make_mesh_object(doc, part_obj, elements=5000)   # or size=2.5
-    doc.recompute()                                                   # meshes; obj.FemMesh is set
+    bisectmesh.remesh(obj)                                            # meshes (blocking)
+
+Like FreeCAD's Gmsh object, a document recompute never meshes: meshing is slow, and a recompute
+cannot show progress or be stopped. A recompute checks the object's inputs instead (its
+parameters, the Part's geometry and, with UseResolutionHints, the Part's view resolution): when
+they differ from those of the last meshing, the object is marked as needing a re-mesh
+(NeedsRemesh, MeshStatus, and a greyed icon with a warning badge in the tree). Meshing happens in
+the task panel, through the Re-mesh command (a worker thread with progress and Stop), or in a
+macro through :func:`remesh`. A property that makes no sense (a Part without a solid, a negative
+count) is reported in one line naming the object, and the mesh is marked, never a traceback.
 
 The parameters are properties (group "BisectMesh"), the results read-only properties (group
 "Results"). FreeCAD stores the FemMesh in the document itself; the proxies below keep no state
 of their own, so that a saved document reopens with ``bisectmesh.mesh_object`` importable and
-nothing else. The view provider only adds an icon and the edit panel: the mesh is drawn by
-FEM's own C++ view provider of ``Fem::FemMeshObjectPython``.
+nothing else. The view provider (gui/view_provider.py) only adds an icon and the edit panel: the
+mesh is drawn by FEM's own C++ view provider of ``Fem::FemMeshObjectPython``. This module imports
+nothing of the GUI at load time.
 
 FreeCAD is imported inside the functions: ``import bisectmesh`` stays possible without it.
 """
 
+import hashlib
 import json
 import time
 
@@ -54,11 +65,19 @@ _RESULT_PROPERTIES = (
     ("App::PropertyString", "Summary", "The last meshing in a few lines: counts, stage times, quality"),
     ("App::PropertyString", "ResultData", "The last meshing's counts, times and quality as JSON "
      "(what the panel shows)"),
+    ("App::PropertyBool", "NeedsRemesh", "True when the mesh no longer matches the Part or the "
+     "parameters (or there is none yet): re-mesh with the Re-mesh command, the panel, or "
+     "bisectmesh.remesh(obj). A recompute never re-meshes"),
+    ("App::PropertyString", "MeshStatus", "Why the mesh needs a re-mesh, or what is wrong with the "
+     "parameters; empty when the mesh is up to date"),
+    ("App::PropertyString", "MeshedInputs", "Fingerprint of the inputs of the last meshing"),
 )
+_HIDDEN_RESULTS = ("ResultData", "MeshedInputs")
 
 
 class MeshObject:
-    """Proxy of a BisectMesh FEM mesh object: re-meshes ``Part`` on recompute."""
+    """Proxy of a BisectMesh FEM mesh object: on recompute, marks the mesh as needing a re-mesh
+    when its inputs changed (it never meshes there)."""
 
     Type = TYPE
 
@@ -80,31 +99,35 @@ class MeshObject:
         for kind, name, tooltip in _RESULT_PROPERTIES:
             if name not in present:
                 obj.addProperty(kind, name, _RESULTS, tooltip, _PROP_OUTPUT)
-            # read-only; ResultData hidden too: JSON for the panel, not for people
-            obj.setEditorMode(name, 2 if name == "ResultData" else 1)
+            # read-only; ResultData and MeshedInputs hidden too: for the code, not for people
+            obj.setEditorMode(name, 2 if name in _HIDDEN_RESULTS else 1)
 
     def onDocumentRestored(self, obj):
         self.init_properties(obj)
 
     def execute(self, obj):
-        arguments = mesh_arguments(obj)
-        part = obj.Part
-        shape = part_shape(part)
-        # FreeCAD shows the message as the object's recompute error: say which Part it is about
+        """Checks the inputs; never meshes (see the module's docstring)."""
         try:
-            femmesh, result = mesh_part(part, shape=shape, **arguments)
+            key = input_key(obj)
         except ValueError as err:
-            raise ValueError("%s: %s" % (part.Label, err)) from err
-        except RuntimeError as err:
-            raise RuntimeError("%s: %s" % (part.Label, err)) from err
-        obj.FemMesh = femmesh
-        set_results(obj, result)
+            mark_stale(obj, str(err), error=True)
+            return
+        if not obj.MeshedInputs and obj.FemMesh.VolumeCount > 0 and obj.ResultData:
+            # saved by a version that kept no fingerprint: the mesh is taken as the inputs' own
+            obj.MeshedInputs = key
+        if key != obj.MeshedInputs:
+            mark_stale(obj, "not meshed yet" if not obj.ResultData
+                       else "the Part or a parameter changed since the last meshing")
+        else:
+            mark_current(obj)
 
-    def adopt(self, obj, femmesh, result):
-        """Takes a mesh computed elsewhere from the object's current parameters (the task panel
-        meshes in a worker thread) instead of meshing again on the next recompute."""
+    def adopt(self, obj, femmesh, result, key=None):
+        """Takes a mesh made from the object's current inputs (by :func:`remesh`, or by the task
+        panel in a worker thread); ``key``: their fingerprint, if already known."""
         obj.FemMesh = femmesh
         set_results(obj, result)
+        obj.MeshedInputs = key if key is not None else input_key(obj)
+        mark_current(obj)
         obj.purgeTouched()
 
     # FreeCAD pickles the proxy into the document: there is nothing to keep.
@@ -113,6 +136,94 @@ class MeshObject:
 
     def __setstate__(self, state):
         return None
+
+
+def input_key(obj):
+    """A fingerprint of everything a meshing of ``obj`` depends on: its parameters, the Part's
+    geometry (its BREP text, placement included) and, with UseResolutionHints, the Part's view
+    resolution. ValueError (one line, naming the object) when the parameters make no sense."""
+    from . import shape_mesher
+
+    arguments = mesh_arguments(obj)
+    part = obj.Part
+    try:
+        shape = part_shape(part)
+    except ValueError as err:
+        raise ValueError("%s: %s" % (obj.Label, err)) from None
+    resolution = shape_mesher.view_resolution(part) if arguments["use_hints"] else None
+    digest = hashlib.sha1(shape_fingerprint(shape).encode())
+    digest.update(json.dumps([part.Name, arguments, resolution], sort_keys=True).encode())
+    return digest.hexdigest()
+
+
+def shape_fingerprint(shape):
+    """The geometry of ``shape`` as text that a geometric edit changes and a mere copy, a save
+    and reload, or a tessellation for the view do not (its BREP text does: it carries the
+    triangulation): the sub-shape counts, every vertex (placed), the type, area and centre of
+    every face, the length of every edge, and the volume, to 10 significant digits."""
+    def g(x):
+        return "%.10g" % x
+
+    parts = [shape.ShapeType, str(len(shape.Solids)), str(len(shape.Shells)), str(len(shape.Faces)),
+             str(len(shape.Edges)), g(shape.Volume)]
+    parts.extend("%s,%s,%s" % (g(v.X), g(v.Y), g(v.Z)) for v in shape.Vertexes)
+    for face in shape.Faces:
+        centre = face.CenterOfMass
+        parts.append("%s:%s:%s,%s,%s" % (type(face.Surface).__name__, g(face.Area), g(centre.x), g(centre.y),
+                                          g(centre.z)))
+    parts.extend(g(edge.Length) for edge in shape.Edges)
+    return ";".join(parts)
+
+
+def mark_stale(obj, reason, error=False):
+    """Marks the mesh as needing a re-mesh, says why once in the report view, and greys its icon."""
+    import FreeCAD
+
+    changed = not obj.NeedsRemesh or obj.MeshStatus != reason
+    obj.NeedsRemesh = True
+    obj.MeshStatus = reason
+    if changed:
+        if error:
+            FreeCAD.Console.PrintError("BisectMesh: %s\n" % reason)
+        else:
+            FreeCAD.Console.PrintWarning("BisectMesh: %s needs a re-mesh: %s\n" % (obj.Label, reason))
+        _refresh_icon(obj)
+
+
+def mark_current(obj):
+    if obj.NeedsRemesh or obj.MeshStatus:
+        obj.NeedsRemesh = False
+        obj.MeshStatus = ""
+        _refresh_icon(obj)
+
+
+def _refresh_icon(obj):
+    view = getattr(obj, "ViewObject", None)
+    if view is not None and hasattr(view, "signalChangeIcon"):
+        view.signalChangeIcon()
+
+
+def remesh(obj, progress=None):
+    """Meshes the BisectMesh mesh object ``obj`` from its current Part and parameters, blocking
+    (for macros; the GUI's Re-mesh command does the same in a worker thread). ``progress`` as for
+    :func:`bisectmesh.mesh_shape`. Returns the result dict (see :func:`mesh_part`).
+
+    TypeError unless ``obj`` is a BisectMesh mesh object; ValueError, naming the object, for
+    parameters that make no sense; the exceptions of mesh_shape otherwise."""
+    if not is_mesh_object(obj):
+        raise TypeError("obj must be a BisectMesh mesh object (made by make_mesh_object), not %r" % (obj,))
+    key = input_key(obj)
+    part = obj.Part
+    try:
+        femmesh, result = mesh_part(part, shape=part_shape(part), progress=progress, **mesh_arguments(obj))
+    except ValueError as err:
+        raise ValueError("%s: %s" % (part.Label, err)) from err
+    except RuntimeError as err:
+        if type(err).__name__ == "Cancelled":
+            raise
+        raise RuntimeError("%s: %s" % (part.Label, err)) from err
+    obj.Proxy.adopt(obj, femmesh, result, key)
+    return result
 
 
 def mesh_arguments(obj):
@@ -158,8 +269,14 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=
     shape, resolution  already read from ``part`` (the task panel reads them in the GUI thread and
                        meshes in another); by default read here.
     """
-    from . import shape_mesher
+    from . import arguments, shape_mesher
 
+    elements, size = arguments.count_or_size(elements, size)
+    order = arguments.order(order)
+    use_hints = arguments.flag("use_hints", use_hints)
+    optimize = arguments.passes("optimize", optimize)
+    smooth = arguments.passes("smooth", smooth)
+    progress = arguments.optional_callable("progress", progress)
     if shape is None:
         shape = part_shape(part)
     if use_hints and resolution is None:
@@ -196,8 +313,9 @@ def result_of(femmesh, report, seconds, order):
     return json.loads(json.dumps(result, default=float))  # plain types only
 
 
-_STAGES = (("init_geom", "init geom"), ("bisect", "bisect"), ("gen_nodes", "gen. nodes"),
-           ("gen_tets", "gen. tets"), ("optimize", "optimize"), ("total", "total"))
+# the generator's stages (the keys of its stats' "times"), named as the thesis's tables name them
+STAGES = (("init_geom", "Init geom"), ("bisect", "Bisect"), ("gen_nodes", "Gen. nodes"),
+          ("gen_tets", "Gen. tets"), ("optimize", "Optimize"), ("total", "Total"))
 
 
 def summary(result):
@@ -207,7 +325,7 @@ def summary(result):
     times = result.get("times") or {}
     if times:
         lines.append("stages (s): " + ", ".join(
-            "%s %.3f" % (label, times[key]) for key, label in _STAGES if key in times))
+            "%s %.3f" % (label.lower(), times[key]) for key, label in STAGES if key in times))
     q = result.get("quality") or {}
     if "dihedral_min" in q:
         lines.append("dihedral angles %.2f .. %.2f deg, %.2f%% of elements below 10 deg" % (
@@ -240,67 +358,10 @@ def is_mesh_object(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
-class ViewProviderMeshObject:
-    """View provider proxy: our icon, and the mesh panel on double-click or Edit. The mesh itself
-    is drawn by FEM's ViewProviderFemMeshPython, which this proxy extends."""
-
-    def __init__(self, vobj):
-        vobj.Proxy = self
-
-    def attach(self, vobj):
-        self.Object = vobj.Object
-
-    def getIcon(self):
-        from .gui import icon_path
-
-        return icon_path("BisectMesh_Mesh.svg")
-
-    def setEdit(self, vobj, mode=0):
-        if mode != 0:
-            return None  # other edit modes (Transform, ...) stay FreeCAD's
-        import FreeCADGui
-        from .gui import mesh_panel
-
-        obj = vobj.Object
-        if obj.Part is None:
-            import FreeCAD
-
-            FreeCAD.Console.PrintError("BisectMesh: %s has no Part to mesh; set its Part property\n" % obj.Label)
-            return False
-        FreeCADGui.Control.showDialog(mesh_panel.MeshPanel(obj.Part, mesh_obj=obj))
-        return True
-
-    def unsetEdit(self, vobj, mode=0):
-        if mode != 0:
-            return None
-        import FreeCADGui
-
-        FreeCADGui.Control.closeDialog()
-        return True
-
-    def doubleClicked(self, vobj):
-        import FreeCADGui
-
-        gui_doc = FreeCADGui.getDocument(vobj.Object.Document.Name)
-        if gui_doc.getInEdit() or FreeCADGui.Control.activeDialog():
-            import FreeCAD
-
-            FreeCAD.Console.PrintWarning("BisectMesh: close the open task dialog first\n")
-            return True
-        gui_doc.setEdit(vobj.Object.Name, 0)
-        return True
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-
 def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints=True, optimize=3,
                      smooth=3, name="BisectMesh", analysis=None):
-    """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc`` (not yet meshed: that is
-    the next recompute's job).
+    """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc``, not yet meshed (marked
+    NeedsRemesh): mesh it with :func:`remesh` (blocking), the Re-mesh command or the panel.
 
     elements | size   the target tetrahedron count, or the element size in mm (at most one;
                       neither: 5000 elements)
@@ -309,27 +370,44 @@ def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints
     optimize, smooth  optimisation and smoothing passes
     analysis          the FEM analysis to add it to; by default the active one in the GUI
 
-    Returns the ``Fem::FemMeshObjectPython``.
+    Returns the ``Fem::FemMeshObjectPython``. TypeError for an argument of the wrong type,
+    ValueError (naming the argument) for a value that cannot be meshed.
     """
     import FreeCAD
 
-    if elements is not None and size is not None:
-        raise ValueError("give elements or size, not both")
+    from . import arguments
+
+    if not isinstance(doc, FreeCAD.Document):
+        raise TypeError("doc must be a FreeCAD document, not %s" % type(doc).__name__)
+    if not isinstance(part_obj, FreeCAD.DocumentObject) or not hasattr(part_obj, "Shape"):
+        raise TypeError("part_obj must be a document object with a Shape, not %s" % type(part_obj).__name__)
+    if part_obj.Document is not doc:
+        raise ValueError("part_obj %s is in document %s, not in %s" % (part_obj.Label, part_obj.Document.Name, doc.Name))
     if elements is None and size is None:
         elements = DEFAULT_ELEMENTS
-    if order not in (1, 2):
-        raise ValueError("order must be 1 or 2, not %r" % (order,))
+    elements, size = arguments.count_or_size(elements, size)
+    order = arguments.order(order)
+    use_hints = arguments.flag("use_hints", use_hints)
+    optimize = arguments.passes("optimize", optimize)
+    smooth = arguments.passes("smooth", smooth)
+    if not isinstance(name, str) or not name:
+        raise TypeError("name must be a non-empty string, not %r" % (name,))
+    if analysis is not None and not (isinstance(analysis, FreeCAD.DocumentObject)
+                                     and analysis.isDerivedFrom("Fem::FemAnalysis")):
+        raise TypeError("analysis must be a FEM analysis or None, not %s" % type(analysis).__name__)
     obj = doc.addObject("Fem::FemMeshObjectPython", name)
     MeshObject(obj)
     obj.Part = part_obj
     obj.ElementOrder = ORDERS[order - 1]
-    obj.TargetElements = int(elements) if elements is not None else 0
+    obj.TargetElements = elements if elements is not None else 0
     if size is not None:
-        obj.ElementSize = float(size)
-    obj.UseResolutionHints = bool(use_hints)
-    obj.OptimizePasses = int(optimize)
-    obj.SmoothPasses = int(smooth)
+        obj.ElementSize = size
+    obj.UseResolutionHints = use_hints
+    obj.OptimizePasses = optimize
+    obj.SmoothPasses = smooth
     if FreeCAD.GuiUp:
+        from .gui.view_provider import ViewProviderMeshObject
+
         ViewProviderMeshObject(obj.ViewObject)
         if analysis is None:
             analysis = _active_analysis(doc)
@@ -347,3 +425,14 @@ def _active_analysis(doc):
     if analysis is not None and analysis.Document is doc:
         return analysis
     return None
+
+
+def __getattr__(name):
+    # Documents saved before the view provider moved to gui/view_provider.py name it
+    # bisectmesh.mesh_object.ViewProviderMeshObject: resolved here on first use, so that this
+    # module imports nothing of the GUI.
+    if name == "ViewProviderMeshObject":
+        from .gui.view_provider import ViewProviderMeshObject
+
+        return ViewProviderMeshObject
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))

@@ -12,15 +12,21 @@ Groups: ``Face<k>_Nodes`` (the nodes on B-rep face k, its edges and vertices inc
 r) for every solid; k and r count from 1, as FreeCAD names sub-shapes.
 """
 
+import numbers
+
 import numpy as np
 
-from . import core
+from . import arguments, core
 from .femmesh_arrays import TET4_PERMUTATION, TET10_PERMUTATION
 
 # FreeCAD's defaults for a Part view object (Part preferences "MeshDeviation" and
 # "MeshAngularDeflection"): the deviation in percent, the angular deflection in degrees
 DEFAULT_DEVIATION = 0.5
 DEFAULT_ANGULAR_DEFLECTION = 28.5
+# The finest chord deviation taken: OpenCASCADE's confusion tolerance (mm), and a millionth of the
+# shape's diagonal (finer, BRepMesh runs out of memory and aborts FreeCAD)
+MIN_DEFLECTION = 1e-7
+MIN_RELATIVE_DEFLECTION = 1e-6
 
 
 def view_resolution(obj):
@@ -43,45 +49,43 @@ def resolution_options(shape, resolution):
     ``resolution`` is a number (the chord deviation in mm) or a dict {"deviation": percent (turned
     into mm by FreeCAD's own rule for its views: the mean of the bounding box's sides times the
     percentage), "angular_deflection": degrees, "deflection": mm}. Returns {"chord_deviation":
-    mm, "curvature_elements": elements per full turn}."""
+    mm, "curvature_elements": elements per full turn}.
+
+    TypeError for a resolution that is neither; ValueError, naming the key, for values FreeCAD's
+    views do not take (angular deflection outside 1..180 degrees, deviation above 100 %) or a
+    deflection finer than OpenCASCADE can tessellate the shape (it would abort FreeCAD)."""
     angular = DEFAULT_ANGULAR_DEFLECTION
+    box = shape.BoundBox
     if isinstance(resolution, dict):
         unknown = set(resolution) - {"deviation", "angular_deflection", "deflection"}
         if unknown:
-            raise ValueError("resolution: unknown key(s) %s" % ", ".join(sorted(unknown)))
-        angular = float(resolution.get("angular_deflection", angular))
+            raise ValueError("resolution: unknown key(s) %s (deviation, angular_deflection, deflection)"
+                             % ", ".join(sorted(map(str, unknown))))
+        if "angular_deflection" in resolution:
+            angular = arguments.positive("resolution['angular_deflection']", resolution["angular_deflection"])
         if "deflection" in resolution:
-            deflection = float(resolution["deflection"])
+            deflection = arguments.positive("resolution['deflection']", resolution["deflection"])
         else:
-            box = shape.BoundBox
-            deflection = (box.XLength + box.YLength + box.ZLength) / 300.0 * float(resolution.get("deviation", DEFAULT_DEVIATION))
+            deviation = arguments.positive("resolution['deviation']", resolution.get("deviation", DEFAULT_DEVIATION))
+            if deviation > 100:
+                raise ValueError("resolution['deviation'] is a percentage of the shape's size: at most 100 (got %r)"
+                                 % deviation)
+            deflection = (box.XLength + box.YLength + box.ZLength) / 300.0 * deviation
+    elif isinstance(resolution, bool) or not isinstance(resolution, numbers.Real):
+        raise TypeError("resolution must be a number (mm) or a dict, not %s" % type(resolution).__name__)
     else:
-        deflection = float(resolution)
-    if not deflection > 0 or deflection != deflection or deflection == float("inf"):
-        raise ValueError("resolution: the deflection must be a positive number (got %r)" % deflection)
-    if not 0 < angular < 180:
-        raise ValueError("resolution: the angular deflection must lie between 0 and 180 degrees (got %r)" % angular)
+        deflection = arguments.positive("resolution", resolution)
+    if not 1.0 <= angular <= 180.0:
+        raise ValueError("resolution['angular_deflection'] must lie between 1 and 180 degrees (got %r)" % angular)
+    _check_deflection("resolution", deflection, box)
     return {"chord_deviation": deflection, "curvature_elements": max(3.0, 360.0 / angular)}
 
 
-def _number_of_elements(elements):
-    if elements is None:
-        return None
-    if isinstance(elements, bool) or not isinstance(elements, int):
-        raise ValueError("elements must be a whole number (got %r)" % (elements,))
-    if elements <= 0:
-        raise ValueError("elements must be positive (got %d)" % elements)
-    return elements
-
-
-def _size(size):
-    if size is None:
-        return None
-    if isinstance(size, bool) or not isinstance(size, (int, float)):
-        raise ValueError("size must be a number (got %r)" % (size,))
-    if not (size > 0 and size != float("inf")):
-        raise ValueError("size must be a positive number (got %r)" % (size,))
-    return float(size)
+def _check_deflection(name, deflection, box):
+    finest = max(MIN_DEFLECTION, MIN_RELATIVE_DEFLECTION * box.DiagonalLength)
+    if deflection < finest:
+        raise ValueError("%s: a deflection of %.3g mm is finer than OpenCASCADE can tessellate this shape "
+                         "(%.3g mm across): give at least %.3g mm" % (name, deflection, box.DiagonalLength, finest))
 
 
 def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=False, progress=None, threads=0,
@@ -106,17 +110,32 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
                  such as "Face3"), optimize, smooth, slivers, insertion: see
                  ``bisectmesh.core().default_options()`` and the README
 
-    Raises ValueError for unusable input or options (naming the argument, or FreeCAD's Face<k>,
-    Edge<k>, Solid<k>), bisectmesh.core().Cancelled when cancelled, RuntimeError when a stage of
-    the generator cannot finish.
+    Raises TypeError for an argument of the wrong type or an unknown option; ValueError for an
+    unusable value (naming the argument), a request that would need more than half of the
+    memory, or unusable input (naming FreeCAD's Face<k>, Edge<k>, Solid<k>);
+    bisectmesh.core().Cancelled when cancelled; RuntimeError when a stage of the generator cannot
+    finish.
     """
     import time
 
-    elements, size = _number_of_elements(elements), _size(size)
-    if (elements is None) == (size is None):
-        raise ValueError("give elements or size")
-    if order not in (1, 2) or isinstance(order, bool):
-        raise ValueError("order %r: give 1 (tetra4) or 2 (tetra10)" % (order,))
+    shape = arguments.part_shape_argument(shape)
+    elements, size = arguments.count_or_size(elements, size)
+    order = arguments.order(order)
+    hints = arguments.flag("hints", hints)
+    progress = arguments.optional_callable("progress", progress)
+    threads = arguments.threads(threads)
+    report = arguments.optional_dict("report", report)
+    own = {"elements", "size", "order", "threads"}
+    known = set(core().default_options()) - own
+    for name in options:
+        if name not in known:
+            raise TypeError("mesh_shape() got an unexpected keyword argument %r (options: %s)" % (
+                name, ", ".join(sorted(known))))
+    for name in ("min_size", "max_size", "chord_deviation", "curvature_elements"):
+        if options.get(name) is not None:  # 0: no bound
+            options[name] = 0.0 if options[name] == 0 else arguments.positive(name, options[name])
+    if options.get("chord_deviation"):
+        _check_deflection("chord_deviation", options["chord_deviation"], shape.BoundBox)
     if hints and resolution is None:
         resolution = {"deviation": DEFAULT_DEVIATION}
     if resolution is not None:
@@ -128,6 +147,7 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
         options.update(bounds)
     if not getattr(shape, "Solids", None) and not getattr(shape, "Shells", None):
         raise ValueError("the shape has no solid to mesh (%d faces, no closed shell)" % len(getattr(shape, "Faces", [])))
+    arguments.check_workload(elements, abs(shape.Volume), size, options.get("max_size") or None)
     # the core's share of the time is most of it; reading the file into FreeCAD takes the rest
     core_share = 0.85
 

@@ -17,11 +17,7 @@ from PySide import QtCore, QtGui
 from . import icon_path
 from .. import mesh_object
 
-# the generator's stages, as the thesis's tables name them
-_STAGES = (("init_geom", "Init geom"), ("bisect", "Bisect"), ("gen_nodes", "Gen. nodes"),
-           ("gen_tets", "Gen. tets"), ("optimize", "Optimize"), ("total", "Total"))
 _DEFAULT_ELEMENTS = mesh_object.DEFAULT_ELEMENTS
-_VOLUME_PER_TET = 0.1179  # volume of the regular tetrahedron of unit edge, 1/(6 sqrt 2)
 
 # Workers whose panel closed before they finished: kept referenced until they stop, because a
 # QThread object destroyed while its thread runs takes FreeCAD down with it.
@@ -245,6 +241,9 @@ class MeshPanel:
             self.progress.setFormat("last mesh")
             self.status.setText("The last mesh of %s; change the settings and press Mesh to mesh again."
                                 % _escape(obj.Label))
+        if getattr(obj, "NeedsRemesh", False) and obj.MeshStatus:
+            self.status.setText("<span style='color:#8a6d00'><b>Needs a re-mesh:</b> %s</span>"
+                                % _escape(obj.MeshStatus))
 
     def _mode_changed(self, _checked):
         self.elements.setEnabled(self.by_count.isChecked() and self.worker is None)
@@ -325,6 +324,11 @@ class MeshPanel:
         self.status.setText("Meshing %s\u2026" % _escape(part.Label))
         self.worker.start()
 
+    def accept_when_done(self):
+        """Presses OK for the user once the running meshing has finished well (the Re-mesh
+        command); Stop, Cancel or an error leave the panel open and the object as it was."""
+        self._accept_when_done = self.worker is not None
+
     def stop(self):
         """Asks the running meshing to stop (the Stop button); it stops at its next progress report."""
         if self.worker is not None:
@@ -390,7 +394,7 @@ class MeshPanel:
         self.counts.setText(text)
         times = result.get("times") or {}
         cells = ["<td>%s</td><td align='right'>%.3f s</td>" % (label, times[key])
-                 for key, label in _STAGES if key in times]
+                 for key, label in mesh_object.STAGES if key in times]
         rows = "".join("<tr>%s</tr>" % "<td width='16'></td>".join(cells[i:i + 2])
                        for i in range(0, len(cells), 2))
         self.times.setText("<b>Stage times</b> (generator)<table cellspacing='2'>%s</table>" % rows
@@ -448,8 +452,9 @@ class MeshPanel:
                     FreeCADGui.doCommand("%s.%s = %r" % (expr, prop, value))
                 if args["size"] is not None:
                     FreeCADGui.doCommand("%s.ElementSize = %r" % (expr, args["size"]))
-            # the mesh just computed, not a second meshing on the recompute below
+            # the mesh just computed: a macro meshes here with the line below, uncommented
             obj.Proxy.adopt(obj, femmesh, result)
+            FreeCADGui.doCommand("# bisectmesh.remesh(%s.getObject(%r))  # meshed by the panel" % (doc_expr, obj.Name))
             FreeCADGui.doCommand("%s.recompute()" % doc_expr)
             FreeCADGui.doCommandGui("FreeCADGui.getDocument(%r).getObject(%r).Visibility = False"
                                     % (self.doc_name, self.part_name))
@@ -520,10 +525,13 @@ class MeshPanel:
 
 
 def _size_for(volume, elements):
-    """The edge length of regular tetrahedra that fill ``volume`` with ``elements`` of them."""
+    """The element size that asks for about ``elements`` tetrahedra in ``volume``, to the panel's
+    three decimals (arguments.spacing_for: the one formula)."""
+    from ..arguments import spacing_for
+
     if volume <= 0:
         return 1.0
-    return round((volume / (elements * _VOLUME_PER_TET)) ** (1.0 / 3.0), 3)
+    return round(spacing_for(volume, elements), 3)
 
 
 def _resolution_text(resolution):

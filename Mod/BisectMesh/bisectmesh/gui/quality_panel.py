@@ -59,7 +59,8 @@ class QualityPanel:
         box.setWindowIcon(QtGui.QIcon(icon_path("BisectMesh_Quality.svg")))
         layout = QtGui.QVBoxLayout(box)
 
-        self.title = QtGui.QLabel("<b>%s</b>" % obj.Label)
+        self.label = obj.Label  # plain text, for the report view (the title is rich text)
+        self.title = QtGui.QLabel("<b>%s</b>" % _escape(obj.Label))
         self.title.setWordWrap(True)
         layout.addWidget(self.title)
 
@@ -202,7 +203,7 @@ class QualityPanel:
             import bisectmesh
 
             FreeCAD.Console.PrintMessage(
-                "Mesh quality of %s:\n%s\n" % (self.title.text(), bisectmesh.format_report(self.report)))
+                "Mesh quality of %s:\n%s\n" % (self.label, bisectmesh.format_report(self.report)))
 
     def _show_report(self):
         report = self.report
