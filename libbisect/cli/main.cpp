@@ -1,6 +1,7 @@
 // bisect-mesh: the command-line face of the library. Exit codes (ARCHITECTURE.md §3): 0 done;
 // 2 bad input or options, with one line on stderr naming what and where; 3 the mesher could not
 // finish. No exception escapes: every failure becomes such a line.
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -158,10 +159,11 @@ int main(int argc, char** argv) {
   } else if (positional.size() != 2) {
     return usage_error(cmd + " takes exactly one file");
   }
+  int code = 0;
   try {
-    if (!command) return bisect::cli::run_mesh(cmd, mesh, std::cout, std::cerr);
-    if (cmd == "info") return bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
-    return bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
+    if (!command) code = bisect::cli::run_mesh(cmd, mesh, std::cout, std::cerr);
+    else if (cmd == "info") code = bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
+    else code = bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
   } catch (const bisect::InputError& e) {
     std::cerr << "bisect-mesh: " << e.what() << "\n";
     return 2;
@@ -175,4 +177,12 @@ int main(int argc, char** argv) {
     std::cerr << "bisect-mesh: internal error: " << e.what() << "\n";
     return 3;
   }
+  // what was printed must have arrived too (`bisect-mesh info x.stl > /dev/full`)
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "bisect-mesh: standard output: write failed: " << std::strerror(errno ? errno : EIO) << "\n";
+    return 2;
+  }
+  return code;
 }

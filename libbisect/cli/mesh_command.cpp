@@ -1,6 +1,5 @@
 // `bisect-mesh INPUT -o OUTPUT`: a tetrahedral mesh of a polyhedral input (the whole generator,
 // thesis 6.9.2) or of a B-rep (.brep, .step, .iges: the true-surface route), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
-#include <fstream>
 #include <ostream>
 
 #include "bisect/errors.hpp"
@@ -8,6 +7,7 @@
 #include "bisect/io.hpp"
 #include "bisect/occ.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "io/file_paths.hpp"
 #include "mesh2d/planar_mesher.hpp"
 #include "commands.hpp"
 
@@ -34,9 +34,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     const mesh2d::TriMesh2 m = mesh2d::mesh_planar(in, po, &st);
     mesh2d::write_tri_vtu(m, opt.output);
     if (!opt.stats.empty()) {
-      std::ofstream s(opt.stats);
-      if (!s) throw InputError(opt.stats + ": cannot write");
-      s << mesh2d::planar_stats_json(st) << '\n';
+      io::write_output_file(opt.stats, [&](std::ostream& s) { s << mesh2d::planar_stats_json(st) << '\n'; });
     }
     if (!opt.quiet)
       out << opt.output << ": " << st.triangles << " triangles, " << st.quads << " quadrilaterals, " << st.nodes
@@ -64,9 +62,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     write_mesh(mesh, opt.output);
     const QualitySummary q = summarize_quality(element_quality(mesh));
     if (!opt.stats.empty()) {
-      std::ofstream s(opt.stats);
-      if (!s) throw InputError(opt.stats + ": cannot write");
-      s << generate_stats_json(st, q) << '\n';
+      io::write_output_file(opt.stats, [&](std::ostream& s) { s << generate_stats_json(st, q) << '\n'; });
     }
     if (!opt.quiet)
       out << opt.output << ": " << st.tets << " tetrahedra, " << st.nodes << " nodes, " << st.convex_cells << " convex cells, "
@@ -79,9 +75,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
   const Decomposition d = decompose(in);
   write_cells_poly(d, opt.output);
   if (!opt.stats.empty()) {
-    std::ofstream s(opt.stats);
-    if (!s) throw InputError(opt.stats + ": cannot write");
-    s << decompose_stats_json(d.stats) << '\n';
+    io::write_output_file(opt.stats, [&](std::ostream& s) { s << decompose_stats_json(d.stats) << '\n'; });
   }
   if (!opt.quiet)
     out << opt.output << ": " << d.cells.size() << " convex cells from " << in.regions.size() << " region(s) in "

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "bisect/io.hpp"
+#include "io/file_paths.hpp"
 #include "io/mesh_formats.hpp"
 
 namespace bisect {
@@ -180,11 +181,7 @@ void write_mesh(const TetMesh& mesh, const std::string& path) {
                      "'; supported: .vtu, .msh (Gmsh 4.1 ASCII), .inp (Abaqus/CalculiX), .unv (I-DEAS universal)");
   // Checked before the file is opened: a mesh that cannot be written leaves no empty file.
   meshio::check_writable(mesh, ext);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  writer(mesh, out);
-  out.flush();
-  if (!out) throw InputError(path + ": write failed (disk full?)");
+  io::write_output_file(path, [&](std::ostream& out) { writer(mesh, out); });
 }
 
 }  // namespace bisect
