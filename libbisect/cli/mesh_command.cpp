@@ -41,6 +41,11 @@ void check_job(double volume, std::int64_t required, const MeshOptions& opt, con
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err) {
   (void)err;
   if (opt.output.empty()) throw InputError("no output file given (-o OUTPUT)");
+  // the paths first: a directory or a missing file as input, or an output that cannot be
+  // written, is one line now rather than an error after the meshing
+  io::check_readable_file(input);
+  io::check_output_path(opt.output);
+  if (!opt.stats.empty()) io::check_output_path(opt.stats);
   if (ends_with(input, ".poly2")) {  // a planar mesh (thesis ch. 4)
     if (opt.cells_only) throw InputError("--cells-only is for polyhedral inputs; " + input + " is a 2D input");
     if (!ends_with(opt.output, ".vtu")) throw InputError(opt.output + ": 2D meshes are written as .vtu");

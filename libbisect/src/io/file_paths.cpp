@@ -57,6 +57,13 @@ void check_readable_file(const std::string& path) {
   }
 }
 
+void check_output_path(const std::string& path) {
+  if (path.empty()) throw InputError("an output file name is empty");
+  if (is_directory(path)) throw InputError(path + ": is a directory");
+  if (!is_directory(parent_of(path)))
+    throw InputError(path + ": cannot write: the directory " + parent_of(path) + " does not exist");
+}
+
 void write_output_file(const std::string& path, const std::function<void(std::ostream&)>& write) {
   if (path.empty()) throw InputError("an output file name is empty");
   if (is_directory(path)) throw InputError(path + ": is a directory");

@@ -14,6 +14,11 @@ namespace bisect::io {
 // and only fails on the first read, with libstdc++'s "basic_filebuf::underflow").
 void check_readable_file(const std::string& path);
 
+// Throws InputError when `path` cannot be an output file: "<path>: is a directory", "<path>:
+// cannot write: the directory D does not exist". Checked before a long job, so that a wrong -o
+// fails at once rather than after the meshing.
+void check_output_path(const std::string& path);
+
 // Writes `path` through `write` and makes sure every byte reached it: the stream is checked
 // after it is flushed and closed. On any failure (the file cannot be opened, a write or the
 // close fails, `write` throws) a partial regular file is removed, and InputError names the path

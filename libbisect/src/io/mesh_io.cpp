@@ -163,6 +163,7 @@ TetMesh read_mesh(const std::string& path) {
   else
     throw InputError(path + ": cannot read a tetrahedral mesh from '" + (ext.empty() ? std::string("(no extension)") : ext) +
                      "' files; supported: .vtu, .msh (Gmsh 4.1 or 2.2 ASCII), .inp (Abaqus/CalculiX)");
+  io::check_readable_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open for reading");
   return reader(in, path);
