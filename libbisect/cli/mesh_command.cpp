@@ -1,6 +1,7 @@
 // `bisect-mesh INPUT -o OUTPUT`: a tetrahedral mesh of a polyhedral input (the whole generator,
 // thesis 6.9.2) or of a B-rep (.brep, .step, .iges: the true-surface route), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
 #include <cstdio>
+#include <exception>
 #include <ostream>
 
 #include "bisect/errors.hpp"
@@ -36,6 +37,23 @@ void check_job(double volume, std::int64_t required, const MeshOptions& opt, con
   check_memory(estimate_tet_mesh(volume, r, opt.size, opt.order, cause), opt.max_memory_mb);
 }
 
+// The planar mesher's deeper stages (bisect2d, convex_decompose) say what failed but not in
+// which file: every 2D failure the CLI prints starts with the input's name.
+template <class F>
+auto named_2d_failures(const std::string& input, F&& mesh) {
+  const auto named = [&](const std::exception& e) {
+    const std::string what = e.what();
+    return what.compare(0, input.size(), input) == 0 ? what : input + ": 2D mesh: " + what;
+  };
+  try {
+    return mesh();
+  } catch (const InputError& e) {
+    throw InputError(named(e));
+  } catch (const MeshingError& e) {
+    throw MeshingError(named(e));
+  }
+}
+
 }  // namespace
 
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err) {
@@ -57,7 +75,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     po.elements = opt.elements;
     po.quads = opt.quads;
     mesh2d::PlanarStats st;
-    const mesh2d::TriMesh2 m = mesh2d::mesh_planar(in, po, &st);
+    const mesh2d::TriMesh2 m = named_2d_failures(input, [&] { return mesh2d::mesh_planar(in, po, &st); });
     mesh2d::write_tri_vtu(m, opt.output);
     if (!opt.stats.empty()) {
       io::write_output_file(opt.stats, [&](std::ostream& s) { s << mesh2d::planar_stats_json(st) << '\n'; });
