@@ -10,6 +10,7 @@
 #include "bisect/poly_input.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "io/file_paths.hpp"
 
 namespace bisect::cli {
 namespace {
@@ -149,6 +150,7 @@ void print_histogram(std::ostream& out, const char* name, const MeasureStats& m,
 }  // namespace
 
 int run_info(const std::string& input, const CommonOptions& opt, std::ostream& out, std::ostream&) {
+  io::check_readable_file(input);
   const std::string ext = lower_extension(input);
   if (ext == ".poly2") return info_2d(input, opt, out);
   if (ext == ".poly" || ext == ".stl" || ext == ".off") return info_3d(input, opt, out);
@@ -156,6 +158,7 @@ int run_info(const std::string& input, const CommonOptions& opt, std::ostream& o
 }
 
 int run_quality(const std::string& path, const CommonOptions& opt, std::ostream& out, std::ostream& err) {
+  io::check_readable_file(path);
   const TetMesh mesh = read_mesh(path);
   const std::vector<Violation> violations = validate(mesh);
   const QualitySummary q = summarize_quality(element_quality(mesh));

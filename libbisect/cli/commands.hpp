@@ -40,6 +40,7 @@ struct MeshOptions {
   bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
   double grading = 0;         // --grading G (0: uniform interior spacing)
   bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
+  double max_memory_mb = 0;   // --max-memory MB (0: half of the physical memory)
   bool quiet = false;
 };
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err);

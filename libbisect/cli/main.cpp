@@ -1,8 +1,8 @@
 // bisect-mesh: the command-line face of the library. Exit codes (ARCHITECTURE.md §3): 0 done;
 // 2 bad input or options, with one line on stderr naming what and where; 3 the mesher could not
 // finish. No exception escapes: every failure becomes such a line.
-#include <cmath>
-#include <cstdlib>
+#include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -11,8 +11,24 @@
 
 #include "bisect/errors.hpp"
 #include "commands.hpp"
+#include "option_values.hpp"
 
 namespace {
+
+using bisect::cli::parse_real;
+using bisect::cli::parse_whole;
+
+// The most elements a mesh can number (32-bit indices).
+constexpr std::int64_t kMaxElements = 2147483647;
+
+// --grading: 0 (off) or this range. The graded candidates around each fine boundary node grow
+// as 1/G^3 (graded_nodes.cpp: a shell every 0.85 h out to (Np - h)/G, each of 4 pi r^2 / (0.8 h)^2
+// points: 24,000 per node at G = 0.2 where Np is 10^4 times the node's size, 1.8e5 at 0.1,
+// unbounded as G -> 0, so that --grading 1e-300 never ended), and each candidate's size is
+// taken over every fine node within that reach.
+constexpr double kMinGrading = 0.2;
+constexpr double kMaxGrading = 10;
+const std::string kGradingRange = "0 (off) or a number from 0.2 to 10";
 
 const char* kUsage =
     "usage: bisect-mesh INPUT -o OUTPUT [OPTIONS]\n"
@@ -32,7 +48,7 @@ const char* kUsage =
     "  --threads N     threads for the face grids and the cell fillings (default 0: one per\n"
     "                  core); the mesh is the same for every N\n"
     "  --grading G     interior spacing grows from a short boundary edge's by G per unit of\n"
-    "                  distance, up to Np (default 0: uniform Np inside)\n"
+    "                  distance, up to Np (default 0: uniform Np inside; else 0.2 to 10)\n"
     "  --boundary-flips  also re-triangulate the outer boundary within each input face by the\n"
     "                  2-2 transformation (thesis 7.5; off by default)\n"
     "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
@@ -41,6 +57,8 @@ const char* kUsage =
     "  --quads         2D: pair triangles into quadrilaterals (no angle under 20 degrees)\n"
     "  --cells-only    stop after the convex decomposition and write the convex cells as a\n"
     "                  .poly file, one region per cell, cells sharing their faces\n"
+    "  --max-memory MB refuse, before meshing, a job whose estimated memory exceeds MB\n"
+    "                  megabytes (default: half of the physical memory)\n"
     "  --stats FILE    write statistics as JSON: nodes, tets, regions, convex_cells, times\n"
     "                  (init_geom, bisect, gen_nodes, gen_tets, optimize, total), quality;\n"
     "                  --cells-only: convex_cells, bisections by method, rejected_planes by\n"
@@ -60,7 +78,9 @@ const char* kUsage =
     "  -h, --help      print this help\n"
     "  --version       print the version\n"
     "\n"
-    "exit codes: 0 done; 2 bad input or options; 3 the mesher could not finish\n";
+    "exit codes: 0 done; 2 bad input or options (also: a job over --max-memory, an input or\n"
+    "            output path that cannot be used, a file that could not be written whole);\n"
+    "            3 the mesher could not finish\n";
 
 int usage_error(const std::string& what) {
   std::cerr << "bisect-mesh: " << what << " (see bisect-mesh --help)\n";
@@ -74,6 +94,7 @@ int main(int argc, char** argv) {
   bisect::cli::CommonOptions opt;
   bisect::cli::MeshOptions mesh;
   std::vector<std::string> positional;
+  std::string bad;  // why a value was refused
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string* dst) {
@@ -102,17 +123,21 @@ int main(int argc, char** argv) {
     } else if (a == "-n" || a == "--elements") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number of elements");
-      char* end = nullptr;
-      const long long n = std::strtoll(v.c_str(), &end, 10);
-      if (end == v.c_str() || *end != '\0' || n <= 0) return usage_error(a + " needs a positive whole number, not '" + v + "'");
-      mesh.elements = n;
+      const auto n = parse_whole(a, v, 1, kMaxElements, "a positive whole number", &bad);
+      if (!n) return usage_error(bad);
+      mesh.elements = *n;
     } else if (a == "-s" || a == "--size") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a size");
-      char* end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (end == v.c_str() || *end != '\0' || !(x > 0) || !std::isfinite(x)) return usage_error(a + " needs a positive size, not '" + v + "'");
-      mesh.size = x;
+      const auto x = parse_real(a, v, 0, true, 1e300, false, "a positive size", &bad);
+      if (!x) return usage_error(bad);
+      mesh.size = *x;
+    } else if (a == "--max-memory") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number of megabytes");
+      const auto x = parse_real(a, v, 1, false, 1e12, false, "a number of megabytes from 1 to 1e12", &bad);
+      if (!x) return usage_error(bad);
+      mesh.max_memory_mb = *x;
     } else if (a == "--insertion") {
       std::string v;
       if (!value(&v) || (v != "minmax" && v != "delaunay")) return usage_error(a + " needs minmax or delaunay");
@@ -120,17 +145,15 @@ int main(int argc, char** argv) {
     } else if (a == "--optimize" || a == "--smooth" || a == "--slivers") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number of passes");
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (end == v.c_str() || *end != '\0' || n < 0 || n > 100) return usage_error(a + " needs a number of passes from 0 to 100, not '" + v + "'");
-      (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(n);
+      const auto n = parse_whole(a, v, 0, 100, "a number of passes", &bad);
+      if (!n) return usage_error(bad);
+      (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(*n);
     } else if (a == "--grading") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number");
-      char* end = nullptr;
-      const double g = std::strtod(v.c_str(), &end);
-      if (end == v.c_str() || *end != '\0' || !(g >= 0) || !(g <= 10)) return usage_error(a + " needs a number from 0 to 10, not '" + v + "'");
-      mesh.grading = g;
+      const auto g = parse_real(a, v, kMinGrading, false, kMaxGrading, true, kGradingRange, &bad);
+      if (!g) return usage_error(bad);
+      mesh.grading = *g;
     } else if (a == "--boundary-flips") {
       mesh.boundary_flips = true;
     } else if (a == "--order") {
@@ -140,10 +163,9 @@ int main(int argc, char** argv) {
     } else if (a == "--threads") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number of threads");
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (end == v.c_str() || *end != '\0' || n < 0 || n > 1024) return usage_error(a + " needs a number of threads from 0 (one per core) to 1024, not '" + v + "'");
-      mesh.threads = static_cast<int>(n);
+      const auto n = parse_whole(a, v, 0, 1024, "a number of threads (0: one per core)", &bad);
+      if (!n) return usage_error(bad);
+      mesh.threads = static_cast<int>(*n);
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else {
@@ -158,10 +180,11 @@ int main(int argc, char** argv) {
   } else if (positional.size() != 2) {
     return usage_error(cmd + " takes exactly one file");
   }
+  int code = 0;
   try {
-    if (!command) return bisect::cli::run_mesh(cmd, mesh, std::cout, std::cerr);
-    if (cmd == "info") return bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
-    return bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
+    if (!command) code = bisect::cli::run_mesh(cmd, mesh, std::cout, std::cerr);
+    else if (cmd == "info") code = bisect::cli::run_info(positional[1], opt, std::cout, std::cerr);
+    else code = bisect::cli::run_quality(positional[1], opt, std::cout, std::cerr);
   } catch (const bisect::InputError& e) {
     std::cerr << "bisect-mesh: " << e.what() << "\n";
     return 2;
@@ -175,4 +198,12 @@ int main(int argc, char** argv) {
     std::cerr << "bisect-mesh: internal error: " << e.what() << "\n";
     return 3;
   }
+  // what was printed must have arrived too (`bisect-mesh info x.stl > /dev/full`)
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "bisect-mesh: standard output: write failed: " << std::strerror(errno ? errno : EIO) << "\n";
+    return 2;
+  }
+  return code;
 }

@@ -1,15 +1,19 @@
 // `bisect-mesh INPUT -o OUTPUT`: a tetrahedral mesh of a polyhedral input (the whole generator,
 // thesis 6.9.2) or of a B-rep (.brep, .step, .iges: the true-surface route), the convex cells alone (--cells-only), or a planar mesh of a .poly2 input.
-#include <fstream>
+#include <cstdio>
+#include <exception>
 #include <ostream>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "bisect/io.hpp"
 #include "bisect/occ.hpp"
+#include "bisect/poly_input.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "io/file_paths.hpp"
 #include "mesh2d/planar_mesher.hpp"
 #include "commands.hpp"
+#include "work_estimate.hpp"
 
 namespace bisect::cli {
 namespace {
@@ -18,25 +22,63 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+std::string required_count(const std::string& input, std::int64_t r) {
+  return input + ": its required element count R = " + std::to_string(r);
+}
+
+// The tetrahedral job's memory, checked before meshing (work_estimate.hpp): from -s and the
+// volume, else from -n, else from the input's own R.
+void check_job(double volume, std::int64_t required, const MeshOptions& opt, const std::string& input = "") {
+  const std::int64_t r = opt.elements > 0 ? opt.elements : required;
+  if (opt.size <= 0 && r <= 0) return;  // the generator refuses a job with no count
+  char size[40];
+  std::snprintf(size, sizeof size, "-s %g", opt.size);
+  const std::string cause = opt.size > 0 ? std::string(size) : opt.elements > 0 ? "-n " + std::to_string(r) : required_count(input, r);
+  check_memory(estimate_tet_mesh(volume, r, opt.size, opt.order, cause), opt.max_memory_mb);
+}
+
+// The planar mesher's deeper stages (bisect2d, convex_decompose) say what failed but not in
+// which file: every 2D failure the CLI prints starts with the input's name.
+template <class F>
+auto named_2d_failures(const std::string& input, F&& mesh) {
+  const auto named = [&](const std::exception& e) {
+    const std::string what = e.what();
+    return what.compare(0, input.size(), input) == 0 ? what : input + ": 2D mesh: " + what;
+  };
+  try {
+    return mesh();
+  } catch (const InputError& e) {
+    throw InputError(named(e));
+  } catch (const MeshingError& e) {
+    throw MeshingError(named(e));
+  }
+}
+
 }  // namespace
 
 int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out, std::ostream& err) {
   (void)err;
   if (opt.output.empty()) throw InputError("no output file given (-o OUTPUT)");
+  // the paths first: a directory or a missing file as input, or an output that cannot be
+  // written, is one line now rather than an error after the meshing
+  io::check_readable_file(input);
+  io::check_output_path(opt.output);
+  if (!opt.stats.empty()) io::check_output_path(opt.stats);
   if (ends_with(input, ".poly2")) {  // a planar mesh (thesis ch. 4)
     if (opt.cells_only) throw InputError("--cells-only is for polyhedral inputs; " + input + " is a 2D input");
     if (!ends_with(opt.output, ".vtu")) throw InputError(opt.output + ": 2D meshes are written as .vtu");
     const Poly2Input in = read_poly2(input);
+    if (const std::int64_t r = opt.elements > 0 ? opt.elements : in.required_elements; r > 0)
+      check_memory(estimate_planar_mesh(r, opt.elements > 0 ? "-n " + std::to_string(r) : required_count(input, r)),
+                   opt.max_memory_mb);
     mesh2d::PlanarOptions po;
     po.elements = opt.elements;
     po.quads = opt.quads;
     mesh2d::PlanarStats st;
-    const mesh2d::TriMesh2 m = mesh2d::mesh_planar(in, po, &st);
+    const mesh2d::TriMesh2 m = named_2d_failures(input, [&] { return mesh2d::mesh_planar(in, po, &st); });
     mesh2d::write_tri_vtu(m, opt.output);
     if (!opt.stats.empty()) {
-      std::ofstream s(opt.stats);
-      if (!s) throw InputError(opt.stats + ": cannot write");
-      s << mesh2d::planar_stats_json(st) << '\n';
+      io::write_output_file(opt.stats, [&](std::ostream& s) { s << mesh2d::planar_stats_json(st) << '\n'; });
     }
     if (!opt.quiet)
       out << opt.output << ": " << st.triangles << " triangles, " << st.quads << " quadrilaterals, " << st.nodes
@@ -60,13 +102,21 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.sizing.grading = opt.grading;
     GenerateStats st;
     // a B-rep (.brep, .step, .iges) goes the true-surface route, a polyhedral input the thesis's
-    const TetMesh mesh = brep ? generate_brep_mesh(load_brep_file(input), go, &st) : generate_mesh(read_polyhedral(input), go, &st);
+    TetMesh mesh;
+    if (brep) {
+      const BrepInput in = load_brep_file(input);
+      const Vec3 box = in.bbox_max - in.bbox_min;  // the true volume is not known before the surfaces are meshed
+      check_job(box.x() * box.y() * box.z(), 0, opt);
+      mesh = generate_brep_mesh(in, go, &st);
+    } else {
+      const PolyInput in = read_polyhedral(input);
+      check_job(summarize(in).volume, in.required_elements, opt, input);
+      mesh = generate_mesh(in, go, &st);
+    }
     write_mesh(mesh, opt.output);
     const QualitySummary q = summarize_quality(element_quality(mesh));
     if (!opt.stats.empty()) {
-      std::ofstream s(opt.stats);
-      if (!s) throw InputError(opt.stats + ": cannot write");
-      s << generate_stats_json(st, q) << '\n';
+      io::write_output_file(opt.stats, [&](std::ostream& s) { s << generate_stats_json(st, q) << '\n'; });
     }
     if (!opt.quiet)
       out << opt.output << ": " << st.tets << " tetrahedra, " << st.nodes << " nodes, " << st.convex_cells << " convex cells, "
@@ -79,9 +129,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
   const Decomposition d = decompose(in);
   write_cells_poly(d, opt.output);
   if (!opt.stats.empty()) {
-    std::ofstream s(opt.stats);
-    if (!s) throw InputError(opt.stats + ": cannot write");
-    s << decompose_stats_json(d.stats) << '\n';
+    io::write_output_file(opt.stats, [&](std::ostream& s) { s << decompose_stats_json(d.stats) << '\n'; });
   }
   if (!opt.quiet)
     out << opt.output << ": " << d.cells.size() << " convex cells from " << in.regions.size() << " region(s) in "

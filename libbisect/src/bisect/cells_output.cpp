@@ -6,6 +6,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "io/file_paths.hpp"
 
 namespace bisect {
 
@@ -29,26 +30,25 @@ void write_cells_poly(const Decomposition& d, const std::string& path) {
       const std::size_t loops = m.faces[f].loops.size();
       for (std::size_t l = 0; l < loops; ++l) cell_faces[c].push_back(it->second + static_cast<Index>(l) + 1);
     }
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write");
-  out << std::setprecision(17);
-  out << "-- convex cells of " << m.source << " by BisectMesh: one region per cell; a face with a\n"
-      << "-- hole is followed by the hole as a face lying inside it (thesis 6.13)\n";
-  out << file_faces.size() << ' ' << node_order.size() << ' ' << d.cells.size() << " 0\n";
-  for (Index v : node_order) out << m.nodes[v].x() << ' ' << m.nodes[v].y() << ' ' << m.nodes[v].z() << '\n';
-  for (const auto& loop : file_faces) {
-    out << loop.size();
-    for (Index v : loop) out << ' ' << node_id[v];
-    out << '\n';
-  }
-  out << "-- regions: cell k, then the input region it comes from as a comment\n";
-  for (std::size_t c = 0; c < d.cells.size(); ++c) {
-    out << "-- cell " << c + 1 << " of input region " << d.cells[c].source_region + 1 << '\n';
-    out << cell_faces[c].size();
-    for (Index f : cell_faces[c]) out << ' ' << f;
-    out << '\n';
-  }
-  if (!out) throw InputError(path + ": write failed");
+  io::write_output_file(path, [&](std::ostream& out) {
+    out << std::setprecision(17);
+    out << "-- convex cells of " << m.source << " by BisectMesh: one region per cell; a face with a\n"
+        << "-- hole is followed by the hole as a face lying inside it (thesis 6.13)\n";
+    out << file_faces.size() << ' ' << node_order.size() << ' ' << d.cells.size() << " 0\n";
+    for (Index v : node_order) out << m.nodes[v].x() << ' ' << m.nodes[v].y() << ' ' << m.nodes[v].z() << '\n';
+    for (const auto& loop : file_faces) {
+      out << loop.size();
+      for (Index v : loop) out << ' ' << node_id[v];
+      out << '\n';
+    }
+    out << "-- regions: cell k, then the input region it comes from as a comment\n";
+    for (std::size_t c = 0; c < d.cells.size(); ++c) {
+      out << "-- cell " << c + 1 << " of input region " << d.cells[c].source_region + 1 << '\n';
+      out << cell_faces[c].size();
+      for (Index f : cell_faces[c]) out << ' ' << f;
+      out << '\n';
+    }
+  });
 }
 
 std::string decompose_stats_json(const DecomposeStats& s) {

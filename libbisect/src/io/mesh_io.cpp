@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "bisect/io.hpp"
+#include "io/file_paths.hpp"
 #include "io/mesh_formats.hpp"
 
 namespace bisect {
@@ -162,6 +163,7 @@ TetMesh read_mesh(const std::string& path) {
   else
     throw InputError(path + ": cannot read a tetrahedral mesh from '" + (ext.empty() ? std::string("(no extension)") : ext) +
                      "' files; supported: .vtu, .msh (Gmsh 4.1 or 2.2 ASCII), .inp (Abaqus/CalculiX)");
+  io::check_readable_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open for reading");
   return reader(in, path);
@@ -180,11 +182,7 @@ void write_mesh(const TetMesh& mesh, const std::string& path) {
                      "'; supported: .vtu, .msh (Gmsh 4.1 ASCII), .inp (Abaqus/CalculiX), .unv (I-DEAS universal)");
   // Checked before the file is opened: a mesh that cannot be written leaves no empty file.
   meshio::check_writable(mesh, ext);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path + ": cannot open for writing");
-  writer(mesh, out);
-  out.flush();
-  if (!out) throw InputError(path + ": write failed (disk full?)");
+  io::write_output_file(path, [&](std::ostream& out) { writer(mesh, out); });
 }
 
 }  // namespace bisect

@@ -9,6 +9,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
+#include "io/file_paths.hpp"
 #include "io/face_checks.hpp"
 #include "io/text_scan.hpp"
 
@@ -115,6 +116,7 @@ PolyInput read_off(std::istream& stream, const std::string& name) {
 }
 
 PolyInput read_off(const std::string& path) {
+  io::check_readable_file(path);
   std::ifstream f(path);
   if (!f) throw InputError(path + ": cannot open the file (" + std::strerror(errno) + ")");
   return read_off(f, path);

@@ -17,6 +17,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
+#include "io/file_paths.hpp"
 #include "io/face_checks.hpp"
 #include "io/text_scan.hpp"
 
@@ -31,6 +32,7 @@ constexpr std::int64_t kMaxCount = std::numeric_limits<Index>::max();
 constexpr std::int64_t kMaxReserve = std::int64_t(1) << 20;
 
 std::ifstream open_text(const std::string& path) {
+  io::check_readable_file(path);
   std::ifstream f(path);
   if (!f) throw InputError(path + ": cannot open the file (" + std::strerror(errno) + ")");
   return f;

@@ -16,6 +16,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
+#include "io/file_paths.hpp"
 #include "io/face_checks.hpp"
 #include "io/text_scan.hpp"
 
@@ -219,6 +220,7 @@ PolyInput read_stl(std::istream& in, const std::string& name) {
 }
 
 PolyInput read_stl(const std::string& path) {
+  io::check_readable_file(path);
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path + ": cannot open the file (" + std::strerror(errno) + ")");
   return read_stl(f, path);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bisect/errors.hpp"
+#include "io/file_paths.hpp"
 #include "mesh2d/fill_region.hpp"
 #include "mesh2d/prep_regions.hpp"
 #include "mesh2d/quads.hpp"
@@ -73,29 +74,28 @@ TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats
 }
 
 void write_tri_vtu(const TriMesh2& m, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write");
-  out.precision(17);
-  const std::size_t cells = m.tris.size() + m.quads.size();
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << m.nodes.size() << "\" NumberOfCells=\"" << cells << "\">\n"
-      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const Vec2& p : m.nodes) out << p.x() << ' ' << p.y() << " 0\n";
-  out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : m.tris) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  for (const auto& q : m.quads) out << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
-  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  std::size_t off = 0;
-  for (std::size_t i = 0; i < m.tris.size(); ++i) out << (off += 3) << '\n';
-  for (std::size_t i = 0; i < m.quads.size(); ++i) out << (off += 4) << '\n';
-  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < m.tris.size(); ++i) out << "5\n";
-  for (std::size_t i = 0; i < m.quads.size(); ++i) out << "9\n";
-  out << "</DataArray>\n</Cells>\n<CellData Scalars=\"region\">\n<DataArray type=\"Int32\" Name=\"region\" format=\"ascii\">\n";
-  for (Index r : m.tri_region) out << r + 1 << '\n';
-  for (Index r : m.quad_region) out << r + 1 << '\n';
-  out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  if (!out) throw InputError(path + ": write failed");
+  io::write_output_file(path, [&](std::ostream& out) {
+    out.precision(17);
+    const std::size_t cells = m.tris.size() + m.quads.size();
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << m.nodes.size() << "\" NumberOfCells=\"" << cells << "\">\n"
+        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const Vec2& p : m.nodes) out << p.x() << ' ' << p.y() << " 0\n";
+    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (const auto& t : m.tris) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    for (const auto& q : m.quads) out << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    std::size_t off = 0;
+    for (std::size_t i = 0; i < m.tris.size(); ++i) out << (off += 3) << '\n';
+    for (std::size_t i = 0; i < m.quads.size(); ++i) out << (off += 4) << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (std::size_t i = 0; i < m.tris.size(); ++i) out << "5\n";
+    for (std::size_t i = 0; i < m.quads.size(); ++i) out << "9\n";
+    out << "</DataArray>\n</Cells>\n<CellData Scalars=\"region\">\n<DataArray type=\"Int32\" Name=\"region\" format=\"ascii\">\n";
+    for (Index r : m.tri_region) out << r + 1 << '\n';
+    for (Index r : m.quad_region) out << r + 1 << '\n';
+    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  });
 }
 
 std::string planar_stats_json(const PlanarStats& s) {

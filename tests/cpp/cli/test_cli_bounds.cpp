@@ -1,0 +1,158 @@
+// Bounded work: numbers on the command line are read strictly (no overflow clamped, no NaN), a
+// job whose estimated memory exceeds --max-memory (default half of the physical memory) is
+// refused before meshing, and --grading stays in the range the graded nodes handle.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+  double seconds = 0;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+fs::path scratch() {
+  fs::path d = fs::temp_directory_path() / ("bisect_cli_bounds_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+Result run(const std::string& args) {
+  const fs::path d = scratch();
+  const std::string cmd = std::string("'") + BISECT_CLI + "' " + args + " >'" + (d / "out").string() + "' 2>'" +
+                          (d / "err").string() + "'";
+  const auto t0 = std::chrono::steady_clock::now();
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(d / "out");
+  r.err = slurp(d / "err");
+  return r;
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+const std::string kCubes = "'" + std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly'";
+const std::string kSquares = "'" + std::string(BISECT_TEST_DATA) + "/square-subdomain-adjacent-square.poly2'";
+
+std::string out_vtu() { return " -o '" + (scratch() / "m.vtu").string() + "'"; }
+
+}  // namespace
+
+// -n 1e9 used to take 1.7 GB and 20 s before "out of memory": now refused before any meshing.
+TEST(CliBounds, ABillionElementsIsRefusedUpFrontNamingMaxMemory) {
+  fs::remove(scratch() / "m.vtu");
+  const Result r = run(kCubes + " -n 1e9" + out_vtu());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_TRUE(has(r.err, "-n 1000000000: an estimated 1e+09 tetrahedra")) << r.err;
+  EXPECT_TRUE(has(r.err, "--max-memory")) << r.err;
+  // the estimate is in the message, in GB, and far over any half of a machine's memory here
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex("need about ([0-9.]+) GB"))) << r.err;
+  EXPECT_GT(std::stod(m[1]), 100.0) << r.err;
+  EXPECT_LT(r.seconds, 10.0);  // refused, not attempted (a generous bound on a loaded machine)
+  EXPECT_FALSE(fs::exists(scratch() / "m.vtu"));
+  // the same for the 2D mesher and for a spacing far below the part's size
+  Result t = run(kSquares + " -n 1e9" + out_vtu());
+  EXPECT_EQ(t.code, 2) << t.err;
+  EXPECT_TRUE(has(t.err, "triangles")) << t.err;
+  EXPECT_TRUE(has(t.err, "--max-memory")) << t.err;
+  t = run(kCubes + " -s 1e-6" + out_vtu());
+  EXPECT_EQ(t.code, 2) << t.err;
+  EXPECT_TRUE(has(t.err, "-s 1e-06: an estimated")) << t.err;
+}
+
+TEST(CliBounds, MaxMemorySetsTheLimit) {
+  Result r = run(kCubes + " -n 100000 --max-memory 40" + out_vtu());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(has(r.err, "-n 100000: an estimated 100000 tetrahedra")) << r.err;
+  EXPECT_TRUE(has(r.err, "over the limit of 40 MB set by --max-memory")) << r.err;
+  r = run(kCubes + " -n 300 --max-memory 100" + out_vtu());
+  EXPECT_EQ(r.code, 0) << r.err;
+  // the input's own R is what asks for the elements when -n is not given: the file is named
+  const fs::path big = scratch() / "big-r.poly";
+  std::string text = slurp(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  const std::size_t header = text.find("17 20 3 26");
+  ASSERT_NE(header, std::string::npos);
+  text.replace(header, 10, "17 20 3 900000000");
+  std::ofstream(big) << text;
+  r = run("'" + big.string() + "'" + out_vtu());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(has(r.err, big.string() + ": its required element count R = 900000000")) << r.err;
+  for (const char* bad : {"0", "-5", "nan", "inf", "lots"}) {
+    r = run(kCubes + " -n 300 --max-memory " + bad + out_vtu());
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_TRUE(has(r.err, std::string("--max-memory needs")) && has(r.err, std::string("'") + bad + "'")) << r.err;
+  }
+}
+
+// Numbers are never clamped or wrapped: each bad value is refused naming the flag and the value.
+TEST(CliBounds, NumbersOutOfRangeAreRefusedNamingFlagAndValue) {
+  struct Case {
+    const char* flag;
+    const char* value;
+    const char* why;
+  };
+  for (const Case& c : {Case{"-n", "99999999999999999999", "too large"}, Case{"-n", "3e9", "too large"},
+                        Case{"-n", "2147483648", "too large"}, Case{"-n", "nan", "not a number"},
+                        Case{"-n", "inf", "too large"}, Case{"-n", "-5", "negative"}, Case{"-n", "0", "too small"},
+                        Case{"-n", "2.5", "not a whole number"}, Case{"-s", "nan", "not a number"},
+                        Case{"-s", "inf", "not finite"}, Case{"-s", "1e999", "not finite"}, Case{"-s", "0", "zero"},
+                        Case{"-s", "-1", "negative"}, Case{"--threads", "99999999999999999999", "too large"},
+                        Case{"--optimize", "-1", "negative"}, Case{"--slivers", "1e9", "too large"}}) {
+    const Result r = run(kCubes + " " + c.flag + " " + c.value + out_vtu());
+    EXPECT_EQ(r.code, 2) << c.flag << " " << c.value;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_TRUE(has(r.err, std::string(c.flag) + " needs")) << r.err;
+    EXPECT_TRUE(has(r.err, std::string("'") + c.value + "' (" + c.why + ")")) << r.err;
+  }
+  // counts written in exponent notation are whole numbers too
+  const Result r = run(kCubes + " -n 3e2" + out_vtu());
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
+// --grading 1e-300 never ended (graded_nodes.cpp's shells grow as 1/G^3): refused at parse time.
+TEST(CliBounds, GradingOutsideItsRangeIsRefused) {
+  for (const char* g : {"1e-300", "0.01", "0.19", "-1", "nan", "11", "inf"}) {
+    const Result r = run(kCubes + " -n 300 --grading " + g + out_vtu());
+    EXPECT_EQ(r.code, 2) << g;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_TRUE(has(r.err, std::string("--grading needs 0 (off) or a number from 0.2 to 10, not '") + g + "'")) << r.err;
+  }
+}
+
+TEST(CliBounds, GradingInItsRangeFinishes) {
+  for (const char* g : {"0.3", "0.2", "10"}) {
+    const Result r = run(kCubes + " -n 2000 --grading " + g + out_vtu());
+    EXPECT_EQ(r.code, 0) << g << ": " << r.err;
+    EXPECT_TRUE(has(r.out, "tetrahedra")) << r.out;
+  }
+}
