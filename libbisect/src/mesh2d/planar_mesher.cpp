@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bisect/errors.hpp"
+#include "geom/recentre.hpp"
 #include "mesh2d/fill_region.hpp"
 #include "mesh2d/prep_regions.hpp"
 #include "mesh2d/quads.hpp"
@@ -40,6 +41,14 @@ TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarS
 }  // namespace
 
 TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats) {
+  const Vec2 shift = geom::recentring_shift(in.nodes);  // a part far from the origin: near it
+  if (shift != Vec2::Zero()) {
+    Poly2Input near = in;
+    for (Vec2& p : near.nodes) p -= shift;
+    TriMesh2 m = mesh_planar(near, opt, stats);
+    for (Vec2& p : m.nodes) p += shift;
+    return m;
+  }
   const auto t0 = Clock::now();
   PlanarStats st;
   const PlanarDomain d = prepare_planar(in);
