@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bisect/errors.hpp"
+#include "domain/poly2_overlaps.hpp"
 
 namespace bisect::mesh2d {
 namespace {
@@ -19,6 +20,7 @@ double signed_area(const std::vector<Vec2>& nodes, const std::vector<Index>& loo
 }  // namespace
 
 PlanarDomain prepare_planar(const Poly2Input& in) {
+  reject_overlapping_polygons(in);  // the nesting below assumes polygons that do not overlap in part
   const Poly2Summary sum = summarize(in);
   PlanarDomain d;
   d.nodes = in.nodes;
