@@ -79,13 +79,16 @@ struct PlaneFrame {
 struct PreparationReport {
   std::size_t faces = 0, interfaces = 0, cavities = 0, sub_domains = 0, face_holes = 0;
   std::size_t inner_shells_as_cavities = 0;  // inner shells of one region (STL/OFF): cavities
+  std::size_t separate_bodies = 0;  // model regions added because a region's boundary bounds
+                                    // several bodies (disjoint parts of one STL/OFF): each its own
   std::vector<Index> region_of_input;        // model region per input region (-1: cavity)
 };
 
 // Builds the model from a read input: orients every face by a ray test per shell, finds
-// interfaces, puts cavities and sub-domains into the region that contains them, and rejects
-// inputs that are not closed, self-intersect or have inconsistent interfaces (InputError naming
-// faces and nodes by the file's 1-based numbers).
+// interfaces, puts cavities and sub-domains into the region that contains them, makes each
+// separate body of a region its own model region (with the same source), and rejects inputs that
+// are not closed, self-intersect or have inconsistent interfaces (InputError naming faces and
+// nodes by the file's 1-based numbers).
 PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report = nullptr);
 
 // ---- convex decomposition (6.4-6.7, 7.3) ----

@@ -20,6 +20,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/plane_cut.hpp"
 #include "bisect/plane_selection.hpp"
+#include "geom/recentre.hpp"
 
 namespace bisect {
 namespace {
@@ -158,6 +159,15 @@ void remove_face_holes(PolyhedralModel& m, const DecomposeOptions& opt, Decompos
 }  // namespace
 
 Decomposition decompose(const PolyInput& in, const DecomposeOptions& opt) {
+  const Vec3 shift = geom::recentring_shift(in.nodes);  // a part far from the origin: near it
+  if (shift != Vec3::Zero()) {
+    PolyInput near = in;
+    for (Vec3& p : near.nodes) p -= shift;
+    Decomposition d = decompose(near, opt);
+    for (Vec3& p : d.model.nodes) p += shift;
+    for (ModelFace& f : d.model.faces) f.offset += f.normal.dot(shift);
+    return d;
+  }
   const auto t0 = Clock::now();
   PolyhedralModel m = prepare_model(in);
   const double prep = since(t0);

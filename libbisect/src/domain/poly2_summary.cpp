@@ -1,9 +1,14 @@
 // Areas and nesting of a 2D input's polygons (thesis 4.6.1): which polygon lies inside which, so
-// that a region's net area leaves out its holes and sub-domains.
+// that a region's net area leaves out its holes and sub-domains; and the check that no two
+// polygons overlap in part.
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
+#include "bisect/errors.hpp"
 #include "bisect/poly_input.hpp"
+#include "domain/poly2_overlaps.hpp"
 #include "geom/predicates.hpp"
 
 namespace bisect {
@@ -59,6 +64,59 @@ bool lies_inside(const Poly2Input& in, const std::vector<Index>& inner, const st
   return false;  // the same polygon
 }
 
+
+// ---- overlapping polygons ----
+
+bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {  // p collinear with ab assumed
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+         p.y() <= std::max(a.y(), b.y());
+}
+
+struct Pieces {
+  bool in = false, out = false, all_on = true;
+};
+
+// Where polygon p's edges run with respect to polygon q, edge pieces cut at q's vertices: some
+// piece strictly inside q, some strictly outside, or every piece on q's boundary. Sets *cross to a
+// point where an edge of p properly crosses one of q's (false when none does).
+Pieces pieces(const Poly2Input& in, const std::vector<Index>& p, const std::vector<Index>& q, bool* cross, Vec2* where) {
+  Pieces r;
+  const auto& X = in.nodes;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 &a = X[p[i]], &b = X[p[(i + 1) % p.size()]];
+    std::vector<Vec2> cuts{a, b};
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const Vec2 &c = X[q[j]], &d = X[q[(j + 1) % q.size()]];
+      const int oc = geom::orient2d(a, b, c), od = geom::orient2d(a, b, d);
+      if (oc * od < 0 && geom::orient2d(c, d, a) * geom::orient2d(c, d, b) < 0) {
+        *cross = true;
+        const double t = std::abs((c - a).x() * (d - c).y() - (c - a).y() * (d - c).x()) /
+                         std::max(std::abs((b - a).x() * (d - c).y() - (b - a).y() * (d - c).x()), 1e-300);
+        *where = a + std::clamp(t, 0.0, 1.0) * (b - a);
+        return r;
+      }
+      if (oc == 0 && c != a && c != b && on_segment(a, b, c)) cuts.push_back(c);
+    }
+    std::sort(cuts.begin() + 1, cuts.end(), [&](const Vec2& u, const Vec2& v) { return (u - a).squaredNorm() < (v - a).squaredNorm(); });
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const Vec2 &u = cuts[k], &v = cuts[k + 1];
+      if (u == v) continue;
+      bool on = false;  // the piece lies along an edge of q (decided exactly, from its ends)
+      for (std::size_t j = 0; j < q.size() && !on; ++j) {
+        const Vec2 &c = X[q[j]], &d = X[q[(j + 1) % q.size()]];
+        on = geom::orient2d(c, d, u) == 0 && geom::orient2d(c, d, v) == 0 && on_segment(c, d, u) && on_segment(c, d, v);
+      }
+      if (on) continue;
+      r.all_on = false;
+      const Vec2 mid = 0.5 * (u + v);
+      const int at = locate(in, q, mid);
+      if (at > 0 && !r.in) r.in = true, *where = mid;
+      if (at < 0) r.out = true;
+    }
+  }
+  return r;
+}
+
 }  // namespace
 
 Poly2Summary summarize(const Poly2Input& in) {
@@ -96,6 +154,49 @@ Poly2Summary summarize(const Poly2Input& in) {
   }
   for (const auto& p : s.polygons) s.area += p.net_area;
   return s;
+}
+
+}  // namespace bisect
+
+namespace bisect {
+
+void reject_overlapping_polygons(const Poly2Input& in) {
+  const std::size_t n = in.polygons.size();
+  std::vector<Vec2> lo(n), hi(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lo[i] = hi[i] = in.nodes[in.polygons[i].nodes[0]];
+    for (Index v : in.polygons[i].nodes) lo[i] = lo[i].cwiseMin(in.nodes[v]), hi[i] = hi[i].cwiseMax(in.nodes[v]);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if ((lo[i].array() >= hi[j].array()).any() || (lo[j].array() >= hi[i].array()).any()) continue;  // apart
+      const auto& P = in.polygons[i].nodes;
+      const auto& Q = in.polygons[j].nodes;
+      bool cross = false, cross_back = false;
+      Vec2 where = Vec2::Zero(), where_back = Vec2::Zero();
+      const Pieces pq = pieces(in, P, Q, &cross, &where);
+      const Pieces qp = cross ? Pieces{} : pieces(in, Q, P, &cross_back, &where_back);
+      std::string how;
+      if (cross || cross_back) {
+        how = "their edges cross";
+        if (!cross) where = where_back;
+      } else if (pq.in && pq.out) {
+        how = "polygon " + std::to_string(i + 1) + " runs both inside and outside polygon " + std::to_string(j + 1);
+      } else if (qp.in && qp.out) {
+        how = "polygon " + std::to_string(j + 1) + " runs both inside and outside polygon " + std::to_string(i + 1);
+        where = where_back;
+      } else if (pq.all_on) {
+        how = "they have the same outline";
+        where = in.nodes[P[0]];
+      } else {
+        continue;  // one inside the other (a hole or a sub-domain), or side by side
+      }
+      std::ostringstream msg;
+      msg.precision(9);
+      msg << in.source << ": polygons " << i + 1 << " and " << j + 1 << " overlap (" << how << ", at (" << where.x() << ", "
+          << where.y() << ")); polygons may share edges or lie one inside the other, but not overlap in part";
+      throw InputError(msg.str());
+    }
 }
 
 }  // namespace bisect

@@ -5,6 +5,8 @@
 // inside each shell; a ray from a point inside one face along its normal then tells whether that
 // normal points out of the region (an even number of crossings) or into it (odd). Rays that pass
 // near an edge or meet a face at a grazing angle are not trusted: another face is tried.
+//
+// A region whose shells bound several separate bodies is split into one model region per body.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -107,6 +109,123 @@ int ray_crossings(const PolyhedralModel& m, const std::vector<Index>& faces, Ind
 
 std::string face_name(const PolyInput& in, Index input_face) {
   return "face " + std::to_string(input_face + 1);
+}
+
+
+// Per region: its faces grouped into shells (faces joined through edges that exactly two of the
+// region's faces use: two bodies touching along an edge stay apart), each shell's volume with
+// the normals pointing out of the region (positive: it bounds a body; negative: an inner
+// boundary, a cavity or a sub-domain).
+struct RegionShells {
+  std::vector<std::vector<Index>> faces;
+  std::vector<double> volume;
+};
+
+RegionShells region_shells(const PolyhedralModel& m, Index r) {
+  const std::vector<Index>& F = m.regions[r].faces;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> uses;
+  for (std::size_t k = 0; k < F.size(); ++k)
+    for (const auto& loop : m.faces[F[k]].loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) uses[edge_key(loop[i], loop[(i + 1) % loop.size()])].push_back(k);
+  std::vector<std::size_t> parent(F.size());
+  for (std::size_t k = 0; k < F.size(); ++k) parent[k] = k;
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& [key, us] : uses)
+    if (us.size() == 2) parent[find(us[0])] = find(us[1]);
+  RegionShells out;
+  std::unordered_map<std::size_t, std::size_t> id;
+  for (std::size_t k = 0; k < F.size(); ++k) {
+    const auto [it, fresh] = id.emplace(find(k), out.faces.size());
+    if (fresh) out.faces.emplace_back(), out.volume.push_back(0);
+    out.faces[it->second].push_back(F[k]);
+  }
+  for (std::size_t s = 0; s < out.faces.size(); ++s) {
+    const Vec3 o = m.nodes[m.faces[out.faces[s][0]].loops[0][0]];  // a point of the shell: less cancellation
+    for (Index f : out.faces[s]) {
+      const ModelFace& face = m.faces[f];
+      const int side = m.side_of(f, r);
+      if (side != 0 && side != 1) continue;
+      const double sgn = side == 1 ? 1.0 : -1.0;  // back side: the normal points out of r
+      for (const auto& loop : face.loops) {
+        Vec3 a = Vec3::Zero();
+        for (std::size_t i = 0; i < loop.size(); ++i) a += (m.nodes[loop[i]] - o).cross(m.nodes[loop[(i + 1) % loop.size()]] - o);
+        out.volume[s] += sgn * (m.nodes[loop[0]] - o).dot(face.normal) * 0.5 * a.dot(face.normal) / 3.0;
+      }
+    }
+  }
+  return out;
+}
+
+// Whether p lies inside the closed shell: rays along a few directions until one is trusted.
+bool inside_shell(const PolyhedralModel& m, const std::vector<Index>& shell, const Vec3& p) {
+  static const Vec3 kDirs[] = {Vec3(0.5773, 0.5774, 0.5775), Vec3(-0.31, 0.87, 0.38), Vec3(0.92, -0.17, -0.35),
+                               Vec3(-0.44, -0.61, 0.66), Vec3(0.13, 0.29, -0.95), Vec3(-0.83, 0.41, -0.37)};
+  for (const Vec3& d : kDirs) {
+    const int c = ray_crossings(m, shell, -1, p, d.normalized());
+    if (c >= 0) return c % 2 == 1;
+  }
+  throw MeshingError(m.source + ": no ray tells whether a shell lies inside another");
+}
+
+std::string point_name(const Vec3& p) {
+  std::ostringstream s;
+  s.precision(9);
+  s << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return s.str();
+}
+
+// A region whose boundary falls into several bodies (disjoint parts of one STL or OFF, or of one
+// .poly region) becomes one model region per body: the decomposition joins a region's inner
+// shells to its outer one by cuts, which cannot join two bodies, and a cell that is two convex
+// pieces cannot be filled. Each inner shell goes with the smallest body around it. Bodies may
+// share vertices or edges: each is meshed on its own side and they share those nodes.
+std::size_t split_bodies(PolyhedralModel& m) {
+  std::size_t added = 0;
+  const std::size_t nr = m.regions.size();
+  for (std::size_t r = 0; r < nr; ++r) {
+    const RegionShells sh = region_shells(m, static_cast<Index>(r));
+    std::vector<std::size_t> bodies, inner;
+    for (std::size_t s = 0; s < sh.faces.size(); ++s) (sh.volume[s] > 0 ? bodies : inner).push_back(s);
+    if (bodies.size() < 2) continue;
+    std::vector<std::size_t> owner(sh.faces.size());
+    for (std::size_t b : bodies) owner[b] = b;
+    for (std::size_t s : inner) {
+      Vec3 p;
+      bool found = false;
+      for (std::size_t k = 0; k < sh.faces[s].size() * 3 && !found; ++k) {
+        static const double kScanAt[3] = {0.5, 0.31, 0.73};
+        found = interior_point(m, m.faces[sh.faces[s][k % sh.faces[s].size()]], kScanAt[k / sh.faces[s].size()], &p);
+      }
+      if (!found) throw MeshingError(m.source + ": no point found on an inner shell of region " + std::to_string(m.regions[r].source + 1));
+      double best = HUGE_VAL;
+      for (std::size_t b : bodies)
+        if (sh.volume[b] < best && inside_shell(m, sh.faces[b], p)) best = sh.volume[b], owner[s] = b;
+      if (!(best < HUGE_VAL))
+        throw InputError(m.source + ": region " + std::to_string(m.regions[r].source + 1) + ": the inner boundary through " +
+                         point_name(p) + " lies inside none of the region's bodies");
+    }
+    for (std::size_t i = 1; i < bodies.size(); ++i) {
+      const Index nr2 = static_cast<Index>(m.regions.size());
+      ModelRegion reg;
+      reg.source = m.regions[r].source;
+      for (std::size_t s = 0; s < sh.faces.size(); ++s) {
+        if (owner[s] != bodies[i]) continue;
+        for (Index f : sh.faces[s]) {
+          ModelFace& face = m.faces[f];
+          if (face.front == static_cast<Index>(r)) face.front = nr2;
+          if (face.back == static_cast<Index>(r)) face.back = nr2;
+          reg.faces.push_back(f);
+        }
+      }
+      m.regions.push_back(std::move(reg));
+      ++added;
+    }
+    m.drop_dead_faces(static_cast<Index>(r));  // keeps only the faces still on r's side
+  }
+  return added;
 }
 
 }  // namespace
@@ -294,8 +413,11 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
   }
   for (std::size_t f = 0; f < m.faces.size(); ++f)
     if (m.faces[f].front >= 0 && m.faces[f].back >= 0) ++rep.interfaces;
+  rep.separate_bodies = split_bodies(m);
+  std::size_t inner_shells = 0;
   for (std::size_t r = 0; r < nr; ++r)
-    if (!in.regions[r].cavity && sum.regions[r].shells > 1) rep.inner_shells_as_cavities += sum.regions[r].shells - 1;
+    if (!in.regions[r].cavity && sum.regions[r].shells > 1) inner_shells += sum.regions[r].shells - 1;
+  rep.inner_shells_as_cavities = inner_shells - std::min(inner_shells, rep.separate_bodies);
 
   if (report) *report = rep;
   return m;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <tuple>
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
 #include "mesh2d/loop_geometry.hpp"
+#include "mesh2d/planar_failure.hpp"
 #include "mesh2d/tri_quality.hpp"
 
 namespace bisect::mesh2d {
@@ -317,7 +319,11 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
     if (remove_vertex(X, w, tris)) {
       stack.push_back(std::move(w));
     } else if (!grow_from_edge(X, w, tris, stack)) {
-      throw MeshingError("recursive bisection: a region with no split and no removable vertex");
+      Vec2 centre = Vec2::Zero();
+      for (Index v : w.loop) centre += X[v];
+      throw PlanarFailure("recursive bisection: a piece of " + std::to_string(w.loop.size()) +
+                              " nodes with no split and no removable vertex",
+                          centre / static_cast<double>(std::max<std::size_t>(w.loop.size(), 1)));
     }
   }
 }

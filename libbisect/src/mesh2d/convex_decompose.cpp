@@ -6,6 +6,7 @@
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
 #include "mesh2d/loop_geometry.hpp"
+#include "mesh2d/planar_failure.hpp"
 
 namespace bisect::mesh2d {
 namespace {
@@ -201,11 +202,11 @@ std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::v
     std::size_t host = simple.size();
     for (std::size_t s = 0; s < simple.size() && host == simple.size(); ++s)
       if (inside_loop(X, simple[s], X[hole[0]])) host = s;
-    if (host == simple.size()) throw MeshingError("convex decomposition: a hole lies in no piece");
+    if (host == simple.size()) throw PlanarFailure("convex decomposition: a hole lies in no piece", X[hole[0]], static_cast<int>(hi));
     std::vector<std::vector<Index>> others(loops.begin() + static_cast<std::ptrdiff_t>(hi) + 1, loops.end());
     std::vector<Index> a, b;
     if (!cut_hole(X, simple[host], hole, others, h, true, &a, &b) && !cut_hole(X, simple[host], hole, others, h, false, &a, &b))
-      throw MeshingError("convex decomposition: no pair of cut edges joins a hole to its boundary");
+      throw PlanarFailure("convex decomposition: no pair of cut edges joins a hole to its boundary", X[hole[0]], static_cast<int>(hi));
     simple[host] = std::move(a);
     simple.push_back(std::move(b));
   }

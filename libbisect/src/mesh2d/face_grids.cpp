@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
 #include "mesh2d/fill_region.hpp"
+#include "mesh2d/planar_failure.hpp"
 #include "mesh2d/spacing.hpp"
 #include "util/ordered_parallel.hpp"
 
@@ -98,6 +100,12 @@ FaceGrid mesh_face(const PolyhedralModel& model, Index fi, double h, bool optimi
   const std::size_t boundary = m.nodes.size();
   try {
     fill_region(m, loops, h, std::sqrt(3.0) / 4 * h * h, 0, nullptr, !nodes_only);
+  } catch (const PlanarFailure& e) {
+    const Vec3 at = frame.origin + e.where.x() * frame.e1 + e.where.y() * frame.e2;
+    std::ostringstream where;
+    where.precision(9);
+    where << ", near (" << at.x() << ", " << at.y() << ", " << at.z() << ")";
+    throw MeshingError("face grid of model face " + std::to_string(fi + 1) + (f.source >= 0 ? " (input face " + std::to_string(f.source + 1) + ")" : " (a cut face)") + ": " + e.what() + where.str());
   } catch (const MeshingError& e) {
     throw MeshingError("face grid of model face " + std::to_string(fi + 1) + (f.source >= 0 ? " (input face " + std::to_string(f.source + 1) + ")" : " (a cut face)") + ": " + e.what());
   }

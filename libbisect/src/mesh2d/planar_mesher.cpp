@@ -1,13 +1,16 @@
 #include "mesh2d/planar_mesher.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "bisect/errors.hpp"
+#include "geom/recentre.hpp"
 #include "io/file_paths.hpp"
 #include "mesh2d/fill_region.hpp"
+#include "mesh2d/planar_failure.hpp"
 #include "mesh2d/prep_regions.hpp"
 #include "mesh2d/quads.hpp"
 #include "mesh2d/spacing.hpp"
@@ -19,8 +22,25 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// A step's failure in region r, worded with the input's polygon numbers and coordinates (the
+// domain was moved by -shift).
+MeshingError placed(const Poly2Input& in, const PlanarDomain& d, std::size_t r, const PlanarFailure& e, const Vec2& shift) {
+  const PlanarRegion& reg = d.regions[r];
+  std::ostringstream msg;
+  msg.precision(9);
+  msg << in.source << ": polygon " << reg.polygon + 1;
+  if (e.loop > 0 && static_cast<std::size_t>(e.loop) < reg.loop_polygon.size())
+    msg << " around polygon " << reg.loop_polygon[e.loop] + 1 << (in.polygons[reg.loop_polygon[e.loop]].hole ? " (a hole)" : " (a sub-domain)");
+  const Vec2 at = e.where + shift;
+  // nine digits of the part's own size, however far from the origin it lies
+  const double scale = std::sqrt(std::max(d.area, 1e-300)), far = at.lpNorm<Eigen::Infinity>();
+  msg.precision(9 + static_cast<int>(std::clamp(std::ceil(std::log10(std::max(far / scale, 1.0))), 0.0, 8.0)));
+  msg << ": " << e.what() << ", near (" << at.x() << ", " << at.y() << ")";
+  return MeshingError(msg.str());
+}
+
 // One meshing at spacing h: the boundary grid, then each region filled.
-TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarStats& st) {
+TriMesh2 mesh_once(const Poly2Input& in, const PlanarDomain& d, double h, double element_area, PlanarStats& st, const Vec2& shift) {
   const auto t0 = Clock::now();
   BoundaryGrid g = discretise_boundaries(d, h);
   st.seconds_nodes += since(t0);
@@ -29,8 +49,13 @@ TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarS
   const std::size_t boundary_nodes = g.nodes.size();
   st.convex_pieces = 0;
   FillTimes times;
-  for (std::size_t r = 0; r < d.regions.size(); ++r)
-    st.convex_pieces += fill_region(m, g.loops[r], h, element_area, static_cast<Index>(r), &times);
+  for (std::size_t r = 0; r < d.regions.size(); ++r) {
+    try {
+      st.convex_pieces += fill_region(m, g.loops[r], h, element_area, static_cast<Index>(r), &times);
+    } catch (const PlanarFailure& e) {
+      throw placed(in, d, r, e, shift);
+    }
+  }
   m.fixed.assign(m.nodes.size(), 0);
   for (std::size_t v = 0; v < boundary_nodes; ++v) m.fixed[v] = 1;  // input boundaries and interfaces
   st.seconds_nodes += times.nodes;
@@ -38,9 +63,9 @@ TriMesh2 mesh_once(const PlanarDomain& d, double h, double element_area, PlanarS
   return m;
 }
 
-}  // namespace
-
-TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats) {
+// The planar mesher on an input already near the origin; the input was moved by -shift (messages
+// give the input's own coordinates).
+TriMesh2 mesh_near_origin(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats, const Vec2& shift) {
   const auto t0 = Clock::now();
   PlanarStats st;
   const PlanarDomain d = prepare_planar(in);
@@ -48,14 +73,14 @@ TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats
   if (want <= 0) throw InputError(in.source + ": no required number of elements (give -n or the file's first line)");
   double element_area = d.area / static_cast<double>(want);
   double h = element_spacing(d.area, want);
-  TriMesh2 m = mesh_once(d, h, element_area, st);
+  TriMesh2 m = mesh_once(in, d, h, element_area, st, shift);
   // calibrate: the count goes with 1 / h^2; a few corrections, keeping the closest count
   for (int round = 0; round < 3; ++round) {
     const double ratio = static_cast<double>(m.tris.size()) / static_cast<double>(want);
     if (std::abs(ratio - 1) <= 0.05) break;
     h *= std::sqrt(ratio);
     element_area *= ratio;
-    TriMesh2 again = mesh_once(d, h, element_area, st);
+    TriMesh2 again = mesh_once(in, d, h, element_area, st, shift);
     const auto miss = [&](const TriMesh2& x) { return std::abs(static_cast<double>(x.tris.size()) - static_cast<double>(want)); };
     if (miss(again) < miss(m)) m = std::move(again);
   }
@@ -72,6 +97,19 @@ TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats
   if (stats) *stats = st;
   return m;
 }
+
+}  // namespace
+
+TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats) {
+  const Vec2 shift = geom::recentring_shift(in.nodes);  // a part far from the origin: near it
+  if (shift == Vec2::Zero()) return mesh_near_origin(in, opt, stats, shift);
+  Poly2Input near = in;
+  for (Vec2& p : near.nodes) p -= shift;
+  TriMesh2 m = mesh_near_origin(near, opt, stats, shift);
+  for (Vec2& p : m.nodes) p += shift;
+  return m;
+}
+
 
 void write_tri_vtu(const TriMesh2& m, const std::string& path) {
   io::write_output_file(path, [&](std::ostream& out) {

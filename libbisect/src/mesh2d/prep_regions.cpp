@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bisect/errors.hpp"
+#include "domain/poly2_overlaps.hpp"
 
 namespace bisect::mesh2d {
 namespace {
@@ -19,6 +20,7 @@ double signed_area(const std::vector<Vec2>& nodes, const std::vector<Index>& loo
 }  // namespace
 
 PlanarDomain prepare_planar(const Poly2Input& in) {
+  reject_overlapping_polygons(in);  // the nesting below assumes polygons that do not overlap in part
   const Poly2Summary sum = summarize(in);
   PlanarDomain d;
   d.nodes = in.nodes;
@@ -30,11 +32,13 @@ PlanarDomain prepare_planar(const Poly2Input& in) {
     std::vector<Index> outer = in.polygons[p].nodes;
     if (signed_area(d.nodes, outer) < 0) std::reverse(outer.begin(), outer.end());
     r.loops.push_back(outer);
+    r.loop_polygon.push_back(static_cast<Index>(p));
     for (std::size_t h = 0; h < in.polygons.size(); ++h) {
       if (sum.polygons[h].inside != static_cast<Index>(p)) continue;
       std::vector<Index> hole = in.polygons[h].nodes;  // a hole, or a sub-domain's outline
       if (signed_area(d.nodes, hole) > 0) std::reverse(hole.begin(), hole.end());
       r.loops.push_back(hole);
+      r.loop_polygon.push_back(static_cast<Index>(h));
     }
     r.area = sum.polygons[p].net_area;
     if (r.area <= 0)

@@ -14,6 +14,7 @@ struct PlanarRegion {
   Index polygon = -1;                     // the input polygon that bounds it
   std::vector<std::vector<Index>> loops;  // loops[0] outer (counter-clockwise), then holes
   double area = 0;                        // net
+  std::vector<Index> loop_polygon = {};   // per loop, the input polygon it comes from (messages)
 };
 
 struct PlanarDomain {

@@ -13,6 +13,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/merge_facets.hpp"
+#include "geom/recentre.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
@@ -28,6 +29,14 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 double nominal_spacing(double volume, double elements) { return std::cbrt(8 * volume / elements); }
 
 TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, GenerateStats* stats) {
+  const Vec3 shift = geom::recentring_shift(original.nodes);  // a part far from the origin: near it
+  if (shift != Vec3::Zero()) {
+    PolyInput near = original;
+    for (Vec3& p : near.nodes) p -= shift;
+    TetMesh m = generate_mesh(near, opt, stats);
+    for (Vec3& p : m.nodes) p += shift;
+    return m;
+  }
   const auto t_all = Clock::now();
   GenerateStats st;
   const PolyInput in = opt.merge_coplanar ? merge_coplanar_triangles(original) : original;
