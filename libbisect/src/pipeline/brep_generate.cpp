@@ -93,9 +93,14 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
   // even joined with its neighbours (brep_cells.hpp): the whole route then runs again on a finer
   // proxy, whose facets bulge less.
   const double first_angle = proxy_angle(opt.sizing);
-  constexpr int kProxyAttempts = 3;  // the proxy's angle, then a half and a third of it
+  // The last resort (a tetrahedron of four boundary nodes left inverted for the global flips,
+  // brep_cells.hpp) only once the finer proxies have failed: on the third proxy, then, should
+  // that fail too, on the first (a very coarse curvature bound, 3 elements per turn, can leave the
+  // finer proxies' cells no better off).
+  constexpr int kProxyAttempts = 4;  // the proxy's angle, a half and a third of it, then the first again
   for (int attempt = 0;; ++attempt) {
-    const double angle = first_angle / (1 + attempt);
+    const double angle = attempt < 3 ? first_angle / (1 + attempt) : first_angle;
+    const bool last_resort_allowed = attempt >= 2;
     try {
     const auto t_dec = Clock::now();
     std::function<bool(double)> dec_progress;
@@ -142,7 +147,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
       std::vector<Vec3> X = placed.X;
       pipeline::BrepCellCounts cell_counts;
       const std::vector<pipeline::CellJob> jobs =
-          pipeline::brep_cell_jobs(dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, attempt == kProxyAttempts - 1,
+          pipeline::brep_cell_jobs(dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, last_resort_allowed,
                                    &cell_counts);
       pipeline::FilledCells cells = pipeline::fill_cell_jobs(X, jobs, opt.delaunay_insertion, opt.threads, fill_progress, &placed.P);
       st.gen_tets += since(t_fill);
