@@ -19,6 +19,9 @@ PACKAGES=(
   gmsh tetgen
   # GUI tests in a virtual display
   xvfb xauth
+  # the libFuzzer targets (scripts/fuzz.sh, scripts/sanitize.sh's corpus replay): clang 16, as
+  # clang 14 cannot compile the library (lambdas capturing structured bindings), and its runtimes
+  clang-16 libclang-rt-16-dev
 )
 
 missing=()
