@@ -101,8 +101,8 @@ status=0
 printf '%-18s %12s %8s %10s  %s\n' target executions exec/s corpus findings
 for t in "${TARGETS[@]}"; do
   dir=$BUILD/fuzz-run/$t
-  execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$dir/log" | tail -1 | awk '{print $2}')
-  rate=$(grep -o 'stat::average_exec_per_sec: [0-9]*' "$dir/log" | tail -1 | awk '{print $2}')
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$dir/log" | tail -1 | awk '{print $2}')
+  rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$dir/log" | tail -1 | awk '{print $2}')
   units=$(find "$dir/corpus" -type f | wc -l)
   findings=$(find "$dir" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'oom-*' \
     -o -name 'leak-*' \) -printf '%f ' | sed 's/ $//')
