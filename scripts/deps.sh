@@ -19,10 +19,13 @@ PACKAGES=(
   gmsh tetgen
   # GUI tests in a virtual display
   xvfb xauth
-  # the libFuzzer targets (scripts/fuzz.sh, scripts/sanitize.sh's corpus replay): clang 16, as
-  # clang 14 cannot compile the library (lambdas capturing structured bindings), and its runtimes
-  clang-16 libclang-rt-16-dev
 )
+# Extra packages a caller needs on top (scripts/fuzz.sh asks for clang 16 this way, so that the
+# test command does not install a compiler it never uses).
+if [ -n "${BISECTMESH_EXTRA_PACKAGES:-}" ]; then
+  read -r -a extra <<< "$BISECTMESH_EXTRA_PACKAGES"
+  PACKAGES+=("${extra[@]}")
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

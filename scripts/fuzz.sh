@@ -42,9 +42,14 @@ find_clang() {
     fi
   done
 }
+# clang 16 and its fuzzer runtime, when missing (clang 14 cannot compile the library: lambdas
+# capturing structured bindings); the test command does not need them
+if [ -z "${FUZZ_CXX:-}" ]; then
+  BISECTMESH_EXTRA_PACKAGES="clang-16 libclang-rt-16-dev" "$(dirname "${BASH_SOURCE[0]}")/deps.sh" || true
+fi
 CLANGXX=$(find_clang)
 if [ -z "$CLANGXX" ]; then
-  echo "fuzz.sh: no clang++ 16 or newer (Debian: clang-16 libclang-rt-16-dev, see scripts/deps.sh)" >&2
+  echo "fuzz.sh: no clang++ 16 or newer (Debian: clang-16 libclang-rt-16-dev, which this script installs when it can)" >&2
   exit 3
 fi
 
