@@ -20,6 +20,12 @@ PACKAGES=(
   # GUI tests in a virtual display
   xvfb xauth
 )
+# Extra packages a caller needs on top (scripts/fuzz.sh asks for clang 16 this way, so that the
+# test command does not install a compiler it never uses).
+if [ -n "${BISECTMESH_EXTRA_PACKAGES:-}" ]; then
+  read -r -a extra <<< "$BISECTMESH_EXTRA_PACKAGES"
+  PACKAGES+=("${extra[@]}")
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

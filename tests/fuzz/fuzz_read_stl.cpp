@@ -1,0 +1,12 @@
+// libFuzzer target: the STL reader, ASCII and binary told apart by content (bisect::read_stl on
+// an in-memory stream). A refusal (InputError) is fine; any other exception, signal or
+// sanitizer report is a finding.
+#include "bisect/io.hpp"
+#include "fuzz_guard.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return bisect::fuzz::guarded([&] {
+    std::istringstream in(bisect::fuzz::as_string(data, size));
+    (void)bisect::read_stl(in, "fuzz.stl");
+  });
+}
