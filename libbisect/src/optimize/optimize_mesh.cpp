@@ -3,21 +3,74 @@
 #include <algorithm>
 #include <limits>
 
+#include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "optimize/smooth.hpp"
 
 namespace bisect::optimize {
 
+namespace {
+
+// The first pass of transformations and smoothing goes over the whole mesh; the later ones work
+// from the tetrahedra whose key (tet_angle_key) is below this (smallest solid angle under 0.30
+// sr) and from what their changes make. Lower is cheaper: at 0.10 the mean alpha fell by 0.6%
+// (lug.stl, 10^5), at 0.12 by 0.05%; at 0.15 it held (lug, flange).
+constexpr double kWorkBelowKey = 0.15;
+
+}  // namespace
+
 OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt) {
   OptimizeCounts n;
-  for (int pass = 0; pass < std::max(opt.passes, opt.smooth_passes); ++pass) {
-    if (pass < opt.passes) n.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  const double sliver_below = sliver_key(kSliverBelowDeg);
+  // every change (flip, node move, insertion) goes on a log, from which the lists follow
+  std::vector<Index> changed;
+  std::vector<Index>* const outer_log = cx.changed;
+  cx.changed = &changed;
+  // once `listed`: every tetrahedron under kWorkBelowKey, and every one under the sliver
+  // repair's key (the only ones that can have a dihedral angle under kSliverBelowDeg)
+  std::vector<Index> poor, sliver_list;
+  bool listed = false;
+  const auto relist = [&] {
+    if (!listed) {  // once, after the first pass: one look at each stored key
+      poor = all_below_key(cx, kWorkBelowKey);
+      sliver_list = all_below_key(cx, sliver_below);
+      listed = true;
+    } else {  // the lists and what changed since
+      poor.insert(poor.end(), changed.begin(), changed.end());
+      poor = below_key(cx, std::move(poor), kWorkBelowKey);
+      sliver_list.insert(sliver_list.end(), changed.begin(), changed.end());
+      sliver_list = below_key(cx, std::move(sliver_list), sliver_below);
+    }
+    changed.clear();
+  };
+  const int passes = std::max(opt.passes, opt.smooth_passes);
+  for (int pass = 0; pass < passes; ++pass) {
+    if (pass < opt.passes) {
+      if (pass == 0) {
+        n.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
+      } else {  // from the faces of the poor tetrahedra, and on from every tetrahedron made
+        relist();
+        n.flips += cx.improve_around(poor);
+      }
+    }
     if (pass < opt.smooth_passes) {
-      smooth_interior(X, cx.tets(), fixed, 1);
-      cx.refresh_quality();
+      if (pass == 0) {
+        std::vector<Index> all;
+        all.reserve(cx.live_count());
+        for (std::size_t t = 0; t < cx.tet.size(); ++t)
+          if (cx.alive[t]) all.push_back(static_cast<Index>(t));
+        smooth_nodes(cx, X, fixed, all);
+      } else {  // the free nodes of the poor tetrahedra
+        relist();
+        smooth_nodes(cx, X, fixed, poor);
+      }
     }
   }
-  if (opt.sliver_rounds > 0) n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds));
+  relist();
+  if (opt.sliver_rounds > 0)
+    n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));
+  if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
+  cx.changed = outer_log;
   return n;
 }
 

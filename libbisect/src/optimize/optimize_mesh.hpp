@@ -1,7 +1,7 @@
 // The global improvement once the cells are filled (thesis 6.9.2): passes of the local min-max
-// transformations of 7.5 over the whole mesh (only the constrained faces hold: input faces and
-// interfaces; the cut faces are gone) in turn with Laplace smoothing, each opening moves for the
-// other; then the repair of the slivers they leave.
+// transformations of 7.5 (only the constrained faces hold: input faces and interfaces; the cut
+// faces are gone) in turn with Laplace smoothing, each opening moves for the other; then the
+// repair of the slivers they leave. The first pass covers the whole mesh, the rest work lists.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -54,26 +54,41 @@ double worst_dihedral_cos(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
   return worst;
 }
 
-std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed_nodes, double below_deg, int rounds) {
-  const double limit = std::cos(below_deg * kPi / 180);
+double sliver_key(double below_deg) {
+  // a dihedral angle θ at the edge ab bounds the solid angles at a and b by 2θ (the corner's
+  // spherical triangle lies in the lune of angle θ), so tan(Ω/2) <= tan θ; the margin covers
+  // the rounding of the key
+  return std::tan(below_deg * kPi / 180) * (1 + 1e-6);
+}
+
+std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed_nodes, double below_deg, int rounds,
+                           std::vector<Index> start) {
+  const double limit = std::cos(below_deg * kPi / 180), key = sliver_key(below_deg);
   std::vector<char> fixed = fixed_nodes;  // grows with the nodes inserted (free)
+  // what each round changes (node moves, flips, insertions) is the next round's list, with the
+  // tetrahedra no move improved; the caller's log, if any, gets it all too
+  std::vector<Index>* const outer_log = cx.changed;
+  std::vector<Index> changed;
+  cx.changed = &changed;
+  std::vector<Index> list = below_key(cx, std::move(start), key);
   std::size_t total = 0;
-  for (int round = 0; round < rounds; ++round) {
-    const std::vector<std::vector<Index>> around = incidence(X.size(), cx.tet, &cx.alive);
+  for (int round = 0; round < rounds && !list.empty(); ++round) {
+    changed.clear();
     std::size_t moved = 0;
     std::vector<Index> touched, stuck;  // stuck: no move of a node improves them
-    for (std::size_t t = 0; t < cx.tet.size(); ++t) {
-      if (!cx.alive[t]) continue;
-      const Tet& u = cx.tet[t];
+    for (Index t : list) {
+      const Tet u = cx.tet[t];  // no tetrahedron goes within the loop: t is live
       if (tet_worst(X, u) <= limit) continue;
       const double edge = mean_edge(X, u);
       Index best_v = -1;
       Vec3 best_p;
+      std::vector<Index> best_around;
       double best = 2;
       for (int k = 0; k < 4; ++k) {
         const Index v = u[k];
         if (fixed[v]) continue;
-        const double base = star_worst(X, cx.tet, around[v]);
+        const std::vector<Index> around = star(cx, v, t);
+        const double base = star_worst(X, cx.tet, around);
         const Vec3 &a = X[u[(k + 1) % 4]], &b = X[u[(k + 2) % 4]], &c = X[u[(k + 3) % 4]];
         Vec3 n = (b - a).cross(c - a);
         if (n.dot(X[v] - a) < 0) n = -n;
@@ -82,26 +97,28 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
         // off the opposite face's plane at four steps, the neighbours' mean, and eight fixed
         // directions (the corners of a cube) at a quarter of the edge
         std::vector<Vec3> candidates{old + 0.1 * edge * n, old + 0.2 * edge * n, old + 0.35 * edge * n, old + 0.5 * edge * n,
-                                     neighbour_mean(X, cx.tet, around[v], v)};
+                                     neighbour_mean(X, cx.tet, around, v)};
         for (int c = 0; c < 8; ++c)
           candidates.push_back(old + 0.25 * edge / std::sqrt(3.0) * Vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1));
+        bool better = false;
         for (const Vec3& p : candidates) {
           X[v] = p;
-          const double w = star_worst(X, cx.tet, around[v]);
-          if (w < base - 1e-12 && w < best) best = w, best_v = v, best_p = p;
+          const double w = star_worst(X, cx.tet, around);
+          if (w < base - 1e-12 && w < best) best = w, best_v = v, best_p = p, better = true;
         }
         X[v] = old;
+        if (better) best_around = around;
       }
       if (best_v < 0) {
-        stuck.push_back(static_cast<Index>(t));
+        stuck.push_back(t);
         continue;
       }
       X[best_v] = best_p;
       ++moved;
-      touched.insert(touched.end(), around[best_v].begin(), around[best_v].end());
+      cx.moved(best_around);  // their keys now, and on the log
+      touched.insert(touched.end(), best_around.begin(), best_around.end());
     }
-    // the tetrahedra around moved nodes: their keys, then the transformations from their faces
-    cx.moved(touched);
+    // the transformations from the faces of the tetrahedra around moved nodes
     cx.improve_around(touched);
     // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
     // typical case) gets a new free node half an edge inside it, away from its largest face
@@ -137,9 +154,13 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
       ++inserted;
       cx.improve_around(made);
     }
+    if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
     if (moved + inserted == 0) break;
     total += moved + inserted;
+    stuck.insert(stuck.end(), changed.begin(), changed.end());
+    list = below_key(cx, std::move(stuck), key);
   }
+  cx.changed = outer_log;
   return total;
 }
 

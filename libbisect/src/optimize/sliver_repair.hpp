@@ -14,8 +14,16 @@
 namespace bisect::optimize {
 
 // Up to `rounds` rounds of moves (and insertions: X grows) on the tetrahedra whose smallest
-// dihedral angle is below `below_deg`. cx must work on X. Returns the moves and insertions made.
-std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds);
+// dihedral angle is below `below_deg`, starting from the live ones of `start` whose key is
+// below sliver_key(below_deg) (every such tetrahedron's is: a list that holds all tetrahedra
+// under that key misses none); each later round looks only at what the last one changed and at
+// the tetrahedra it could not improve. cx must work on X and hold every tetrahedron's current
+// key. Returns the moves and insertions made.
+std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds,
+                           std::vector<Index> start);
+
+// A bound on the key (tet_angle_key) of a tetrahedron with a dihedral angle under `below_deg`.
+double sliver_key(double below_deg);
 
 // The cosine of a tetrahedron's smallest dihedral angle (1 for a flat one), 2 when it is not
 // positively oriented: smaller is better.

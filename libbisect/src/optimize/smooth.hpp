@@ -10,7 +10,9 @@
 
 namespace bisect::optimize {
 
-// Returns the number of moves made.
-std::size_t smooth_interior(std::vector<Vec3>& X, const std::vector<tet::Tet>& tets, const std::vector<char>& fixed, int passes);
+// One pass over the free nodes of the tetrahedra `tets` (live ones of cx), each node once, in
+// the order of their numbers. cx must work on X and hold every tetrahedron's current key; the
+// tetrahedra around a moved node get theirs again (TetComplex::moved). Returns the moves made.
+std::size_t smooth_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const std::vector<Index>& tets);
 
 }  // namespace bisect::optimize

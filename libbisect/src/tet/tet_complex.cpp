@@ -85,6 +85,7 @@ void TetComplex::moved(const std::vector<Index>& tets) {
     q[t] = tet_angle_key(X, tet[t]);
     born_[t] = clock_;
   }
+  if (changed) changed->insert(changed->end(), tets.begin(), tets.end());
 }
 
 std::vector<Index> TetComplex::tags() const {
@@ -173,6 +174,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     }
     ids.push_back(id);
   }
+  if (changed) changed->insert(changed->end(), ids.begin(), ids.end());
   // match every new face with another new one or with an old outside face: sorted by key,
   // equal keys meet (a new face pairs with at most one other)
   struct Side {

@@ -56,6 +56,9 @@ class TetComplex {
   // smallest solid angle is below this key (tet_angle_key); above it the gain is small and the
   // cost is not. The default, tan(0.1), is Ω < 0.2 sr (the regular tetrahedron's is 0.551).
   double edge_removal_below = 0.10033467208545055;
+  // When set, `replace` and `moved` append the tetrahedra they make or change: the optimiser's
+  // work lists follow the changes without a scan of the mesh.
+  std::vector<Index>* changed = nullptr;
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
   // default to 0.

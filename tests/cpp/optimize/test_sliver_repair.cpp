@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "optimize/bipyramid.hpp"
+#include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "tet/cell_fill.hpp"
 #include "tet/tet_complex.hpp"
@@ -42,7 +43,7 @@ TEST(SliverRepair, SliverRepairMovesTheFreeNodeAndKeepsFixedOnes) {
   const std::vector<Vec3> before = p.X;
   TetComplex cx(p.X);
   cx.build(tets);
-  const std::size_t moves = repair_slivers(cx, p.X, p.fixed, 10, 5);
+  const std::size_t moves = repair_slivers(cx, p.X, p.fixed, 10, 5, all_below_key(cx, sliver_key(10)));
   EXPECT_GE(moves, 1u);
   for (std::size_t v = 0; v < 5; ++v) EXPECT_EQ(p.X[v], before[v]) << "fixed node " << v << " moved";
   for (const Tet& t : cx.tets()) EXPECT_TRUE(positive(p.X, t));
@@ -51,7 +52,7 @@ TEST(SliverRepair, SliverRepairMovesTheFreeNodeAndKeepsFixedOnes) {
   Bipyramid q;
   TetComplex untouched(q.X);
   untouched.build(fill_convex_cell(q.X, q.boundary, {5}, Vec3(0, 0, 0)));
-  EXPECT_EQ(repair_slivers(untouched, q.X, q.fixed, 10, 0), 0u);
+  EXPECT_EQ(repair_slivers(untouched, q.X, q.fixed, 10, 0, all_below_key(untouched, sliver_key(10))), 0u);
   EXPECT_EQ(q.X[5], Bipyramid().X[5]);
 }
 

@@ -1,0 +1,158 @@
+// The optimiser's work lists: stars found by walking, the log of changed tetrahedra, the key
+// bound that lets sliver repair start from a list, and that list missing no sliver.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "optimize/node_stars.hpp"
+#include "optimize/sliver_repair.hpp"
+#include "tet/cell_fill.hpp"
+#include "tet/tet_complex.hpp"
+
+namespace bisect::optimize {
+namespace {
+
+using tet::Tet;
+using tet::TetComplex;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The unit cube (corners fixed) around a jittered 6 x 6 x 6 grid of free nodes, Delaunay
+// filled: the grid's nearly co-spherical node sets leave slivers.
+struct GridCube {
+  std::vector<Vec3> X;
+  std::vector<char> fixed;
+  std::vector<Tet> tets;
+  GridCube() {
+    for (int i = 0; i < 8; ++i) X.push_back(Vec3(i & 1, i >> 1 & 1, i >> 2 & 1));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
+    std::vector<Index> inside;
+    for (int i = 1; i <= 6; ++i)
+      for (int j = 1; j <= 6; ++j)
+        for (int k = 1; k <= 6; ++k) {
+          inside.push_back(static_cast<Index>(X.size()));
+          X.push_back(Vec3(i / 7.0 + jitter(rng), j / 7.0 + jitter(rng), k / 7.0 + jitter(rng)));
+        }
+    fixed.assign(X.size(), 0);
+    std::fill(fixed.begin(), fixed.begin() + 8, 1);
+    const std::vector<std::array<Index, 3>> boundary{{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    tets = tet::fill_convex_cell(X, boundary, inside, Vec3(0.5, 0.5, 0.5), true);
+  }
+};
+
+double worst_cos(const std::vector<Vec3>& X, const Tet& t) { return worst_dihedral_cos(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
+
+TEST(WorkLists, StarWalkFindsWhatAScanFinds) {
+  GridCube g;
+  TetComplex cx(g.X);
+  cx.build(g.tets);
+  cx.improve_all(1 << 30);  // reused slots and fresh ids, as in the optimiser
+  std::size_t checked = 0;
+  for (Index v = 0; v < static_cast<Index>(g.X.size()); ++v) {
+    std::vector<Index> scan = cx.tets_at(v);
+    ASSERT_FALSE(scan.empty());
+    for (Index t0 : {scan.front(), scan.back()}) {
+      std::vector<Index> walk = star(cx, v, t0);
+      EXPECT_EQ(walk.front(), t0);
+      std::sort(walk.begin(), walk.end());
+      EXPECT_EQ(walk, scan) << "node " << v;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * g.X.size());
+}
+
+TEST(WorkLists, LogHoldsEveryMadeOrMovedTetrahedron) {
+  GridCube g;
+  TetComplex cx(g.X);
+  cx.build(g.tets);
+  std::vector<Index> log;
+  cx.changed = &log;
+  const std::int64_t flips = cx.improve_all(1 << 30);
+  ASSERT_GT(flips, 0);
+  std::size_t differ = 0;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t] && (t >= g.tets.size() || cx.tet[t] != g.tets[t])) {
+      ++differ;
+      EXPECT_NE(std::find(log.begin(), log.end(), static_cast<Index>(t)), log.end()) << t;
+    }
+  EXPECT_GT(differ, 0u);
+  log.clear();
+  cx.moved({3, 5});
+  EXPECT_EQ(log, (std::vector<Index>{3, 5}));
+  // below_key: live ones under the key, sorted, once each
+  const double key = cx.q[5] * 1.000001;
+  const std::vector<Index> listed = below_key(cx, {5, 3, 5}, key);
+  EXPECT_EQ(listed, cx.q[3] < key ? (std::vector<Index>{3, 5}) : (std::vector<Index>{5}));
+  for (Index t : all_below_key(cx, 0.1)) EXPECT_LT(cx.q[t], 0.1);
+}
+
+// A dihedral angle under theta bounds the key by tan(theta): on random, flattened and needle
+// tetrahedra, no tetrahedron with a small dihedral angle is keyed above the bound.
+TEST(WorkLists, SliverKeyBoundsEveryTetrahedronWithASmallDihedralAngle) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::size_t small = 0, above = 0;
+  for (int i = 0; i < 200000; ++i) {
+    std::vector<Vec3> X(4);
+    const double squash = std::pow(10.0, -3 * (i % 4) / 3.0);  // 1, 0.1, 0.01, 0.001
+    for (Vec3& p : X) p = Vec3(u(rng), u(rng), u(rng) * (i % 8 < 4 ? squash : 1));
+    if (i % 8 >= 4) X[3] = X[2] + squash * Vec3(u(rng), u(rng), u(rng));  // a short edge: needles, wedges
+    Tet t{0, 1, 2, 3};
+    if (!tet::positive(X, t)) std::swap(t[0], t[1]);
+    if (!tet::positive(X, t)) continue;
+    for (double deg : {5.0, 10.0, 20.0}) {
+      if (worst_cos(X, t) <= std::cos(deg * kPi / 180)) continue;
+      ++small;
+      EXPECT_LE(tet::tet_angle_key(X, t), sliver_key(deg)) << i << " " << deg;
+    }
+    if (tet::tet_angle_key(X, t) > sliver_key(10)) ++above;
+  }
+  EXPECT_GT(small, 10000u);
+  EXPECT_GT(above, 100u);  // not a bound every tetrahedron meets
+}
+
+// The key list holds every sliver of a real filling; repair from it improves them and logs all
+// it changes for the caller.
+TEST(WorkLists, SliverRepairFromTheKeyList) {
+  GridCube g;
+  const std::vector<Vec3> start = g.X;
+  TetComplex cx(g.X);
+  cx.build(g.tets);
+  const std::vector<Index> listed = all_below_key(cx, sliver_key(10));
+  std::size_t slivers = 0;
+  for (std::size_t t = 0; t < g.tets.size(); ++t)
+    if (worst_cos(g.X, g.tets[t]) > std::cos(10 * kPi / 180)) {
+      ++slivers;
+      EXPECT_TRUE(std::binary_search(listed.begin(), listed.end(), static_cast<Index>(t))) << "sliver " << t << " not listed";
+    }
+  ASSERT_GT(slivers, 5u) << "the grid leaves no sliver";
+  std::vector<Index> log;
+  cx.changed = &log;
+  EXPECT_GT(repair_slivers(cx, g.X, g.fixed, 10, 4, listed), 0u);
+  EXPECT_EQ(cx.changed, &log);  // the caller's log is handed back
+  std::sort(log.begin(), log.end());
+  std::size_t left = 0, differ = 0;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    if (!cx.alive[t]) continue;
+    const Tet& u = cx.tet[t];
+    EXPECT_TRUE(tet::positive(g.X, u));
+    left += worst_cos(g.X, u) > std::cos(10 * kPi / 180);
+    bool same = t < g.tets.size() && u == g.tets[t];
+    for (Index v : u) same = same && static_cast<std::size_t>(v) < start.size() && g.X[v] == start[v];
+    if (!same) {
+      ++differ;
+      EXPECT_TRUE(std::binary_search(log.begin(), log.end(), static_cast<Index>(t))) << "changed " << t << " not logged";
+    }
+  }
+  EXPECT_GT(differ, 0u);
+  EXPECT_LT(left, slivers);
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(g.X[v], start[v]);
+}
+
+}  // namespace
+}  // namespace bisect::optimize
