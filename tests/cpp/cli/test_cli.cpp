@@ -283,3 +283,20 @@ TEST(Cli, MeshesA2DInputIntoVtu) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("2D meshes are written as .vtu"), std::string::npos) << r.err;
 }
+
+// A B-rep file through the main job: meshed on its true surfaces, one NSET per B-rep face in the
+// .inp (FreeCAD's Face<k> numbering), and the help names the B-rep inputs.
+TEST(Cli, MeshesABrepFileWithItsFaceSets) {
+  const fs::path lug = fs::path(BISECT_SHARED_DIR) / "models" / "lug.brep";
+  if (!fs::exists(lug)) GTEST_SKIP() << lug << " is missing";
+  const fs::path out = scratch_dir() / "lug.inp";
+  const CliResult r = run("'" + lug.string() + "' -n 3000 -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string inp = slurp(out);
+  int sets = 0;
+  for (std::size_t at = inp.find("*NSET, NSET=Face"); at != std::string::npos; at = inp.find("*NSET, NSET=Face", at + 1)) ++sets;
+  EXPECT_GE(sets, 6) << "one NSET per B-rep face";
+  EXPECT_NE(inp.find("*NSET, NSET=Face1\n"), std::string::npos);
+  EXPECT_NE(inp.find("C3D4"), std::string::npos);
+  EXPECT_NE(run("--help").out.find(".step/.stp"), std::string::npos);
+}
