@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <string>
 
 #include "bisect/errors.hpp"
@@ -168,17 +167,6 @@ PointOn BrepBoundary::edge_on(Index a, Index b) const {
   return on;
 }
 
-// The parameters of model edge (a, b)'s ends on the B-rep edge it runs along (a chord of it).
-void BrepBoundary::edge_params(Index a, Index b, const PointOn& along, double* ta, double* tb) const {
-  auto param = [&](Index v) {
-    const PointOn& o = node_on_[v];
-    if (o.kind == PointOn::kEdge && o.id == along.id) return o.t;
-    const auto& en = px.tess.edges[along.id].nodes;  // a vertex: which end of the chord
-    return chord_end_param(in, px, along.id, along.chord, en[along.chord] == v ? 0 : 1);
-  };
-  *ta = param(a), *tb = param(b);
-}
-
 void BrepBoundary::discretise_edges(const size::SizeField& h) {
   nodes = {};
   edge_nodes.clear();
@@ -187,174 +175,72 @@ void BrepBoundary::discretise_edges(const size::SizeField& h) {
     nodes.x.push_back(image(node_on_[v], model.nodes[v]));
     nodes.on.push_back(node_on_[v]);
   }
-  // model edges along B-rep edges are discretised as chains per B-rep edge (below), the others
-  // one by one
-  std::map<Index, std::vector<ChordPiece>> along_edge;
   for (const ModelFace& f : model.faces) {
     if (!f.alive) continue;
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Index a = std::min(loop[i], loop[(i + 1) % loop.size()]), b = std::max(loop[i], loop[(i + 1) % loop.size()]);
         if (edge_nodes.count({a, b})) continue;
-        edge_nodes[{a, b}];
+        auto& inner = edge_nodes[{a, b}];
         const PointOn along = edge_on(a, b);
-        if (along.kind == PointOn::kEdge && in.edges[along.id].curve) {
-          ChordPiece c{a, b, along, 0, 0};
-          edge_params(a, b, along, &c.ta, &c.tb);
-          along_edge[along.id].push_back(c);
-        } else {
-          discretise_one(a, b, along, h);
+        const Vec3 pa = model.nodes[a], pb = model.nodes[b];
+        // the edge as a curve of s in [0, 1]: its true point, what that point lies on, and its
+        // proxy point
+        double ta = 0, tb = 0;
+        const ParametricCurve* curve = nullptr;
+        if (along.kind == PointOn::kEdge) {
+          curve = in.edges[along.id].curve.get();
+          auto param = [&](Index v) {
+            const PointOn& o = node_on_[v];
+            if (o.kind == PointOn::kEdge && o.id == along.id) return o.t;
+            const auto& en = px.tess.edges[along.id].nodes;  // a vertex: which end of the chord
+            return chord_end_param(in, px, along.id, along.chord, en[along.chord] == v ? 0 : 1);
+          };
+          ta = param(a), tb = param(b);
+        }
+        auto point_at = [&](double s, PointOn* on) -> Vec3 {
+          const Vec3 p = pa + s * (pb - pa);
+          *on = along;
+          if (along.kind == PointOn::kEdge) {
+            on->t = ta + s * (tb - ta);
+            return curve ? curve->point(on->t) : p;
+          }
+          if (along.kind == PointOn::kFace) return image(along, p);
+          return p;
+        };
+        // the number of segments: the integral of ds / h along the true curve, sampled, with
+        // nodes at equal steps of it (graded with h)
+        auto integrate = [&](int m, std::vector<double>* cum) {
+          cum->assign(m + 1, 0.0);
+          PointOn scratch;
+          Vec3 prev = point_at(0, &scratch);
+          for (int j = 1; j <= m; ++j) {
+            const Vec3 cur = point_at(static_cast<double>(j) / m, &scratch);
+            (*cum)[j] = (*cum)[j - 1] + (cur - prev).norm() / h.at(0.5 * (cur + prev));
+            prev = cur;
+          }
+          return cum->back();
+        };
+        std::vector<double> cum;
+        const double rough = integrate(16, &cum);
+        const int m = static_cast<int>(std::clamp(4 * rough, 16.0, 4096.0));
+        const double total = m == 16 ? rough : integrate(m, &cum);
+        const auto more = finer.find({a, b});
+        const int n = std::max(1, static_cast<int>(std::lround(total))) * (more == finer.end() ? 1 : more->second);
+        for (int k = 1; k < n; ++k) {
+          const double target = total * k / n;
+          const int j = static_cast<int>(std::upper_bound(cum.begin(), cum.end(), target) - cum.begin());
+          const int j0 = std::clamp(j - 1, 0, m - 1);
+          const double span = cum[j0 + 1] - cum[j0];
+          const double s = (j0 + (span > 0 ? (target - cum[j0]) / span : 0.5)) / m;
+          PointOn on;
+          const Vec3 x = point_at(s, &on);
+          nodes.p.push_back(pa + s * (pb - pa));
+          nodes.x.push_back(x);
+          nodes.on.push_back(on);
+          inner.push_back(static_cast<Index>(nodes.x.size() - 1));
         }
       }
-  }
-  for (auto& [e, pieces] : along_edge) discretise_chain(e, pieces, h);
-}
-
-// The integral of ds / h along the true curve of a model edge, as a function of s in [0, 1]
-// sampled at m steps: cum[j] at s = j / m.
-double BrepBoundary::integrate(const std::function<Vec3(double)>& point_at, const size::SizeField& h, int m, std::vector<double>* cum) {
-  cum->assign(m + 1, 0.0);
-  Vec3 prev = point_at(0);
-  for (int j = 1; j <= m; ++j) {
-    const Vec3 cur = point_at(static_cast<double>(j) / m);
-    (*cum)[j] = (*cum)[j - 1] + (cur - prev).norm() / h.at(0.5 * (cur + prev));
-    prev = cur;
-  }
-  return cum->back();
-}
-
-// Where the k-th of n equal steps of the integral falls, as s in [0, 1].
-double BrepBoundary::step_at(const std::vector<double>& cum, double target) {
-  const int m = static_cast<int>(cum.size()) - 1;
-  const int j = static_cast<int>(std::upper_bound(cum.begin(), cum.end(), target) - cum.begin());
-  const int j0 = std::clamp(j - 1, 0, m - 1);
-  const double span = cum[j0 + 1] - cum[j0];
-  return (j0 + (span > 0 ? (target - cum[j0]) / span : 0.5)) / m;
-}
-
-int BrepBoundary::finer_factor(Index a, Index b) const {
-  const auto more = finer.find({std::min(a, b), std::max(a, b)});
-  return more == finer.end() ? 1 : more->second;
-}
-
-void BrepBoundary::discretise_one(Index a, Index b, const PointOn& along, const size::SizeField& h) {
-  auto& inner = edge_nodes[{a, b}];
-  const Vec3 pa = model.nodes[a], pb = model.nodes[b];
-  // the edge as a curve of s in [0, 1]: its true point, what that point lies on, and its proxy
-  // point
-  double ta = 0, tb = 0;
-  const ParametricCurve* curve = nullptr;
-  if (along.kind == PointOn::kEdge) {
-    curve = in.edges[along.id].curve.get();
-    edge_params(a, b, along, &ta, &tb);
-  }
-  auto point_on = [&](double s, PointOn* on) -> Vec3 {
-    const Vec3 p = pa + s * (pb - pa);
-    *on = along;
-    if (along.kind == PointOn::kEdge) {
-      on->t = ta + s * (tb - ta);
-      return curve ? curve->point(on->t) : p;
-    }
-    if (along.kind == PointOn::kFace) return image(along, p);
-    return p;
-  };
-  auto point_at = [&](double s) {
-    PointOn scratch;
-    return point_on(s, &scratch);
-  };
-  // the number of segments: the integral of ds / h along the true curve, sampled, with nodes at
-  // equal steps of it (graded with h)
-  std::vector<double> cum;
-  const double rough = integrate(point_at, h, 16, &cum);
-  const int m = static_cast<int>(std::clamp(4 * rough, 16.0, 4096.0));
-  const double total = m == 16 ? rough : integrate(point_at, h, m, &cum);
-  const int n = std::max(1, static_cast<int>(std::lround(total))) * finer_factor(a, b);
-  for (int k = 1; k < n; ++k) {
-    const double s = step_at(cum, total * k / n);
-    PointOn on;
-    const Vec3 x = point_on(s, &on);
-    nodes.p.push_back(pa + s * (pb - pa));
-    nodes.x.push_back(x);
-    nodes.on.push_back(on);
-    inner.push_back(static_cast<Index>(nodes.x.size() - 1));
-  }
-}
-
-// The model edges along one B-rep edge: chords of the proxy's tessellation, cut where the cut
-// faces cross. Discretised one by one, every chord and every piece of a chord would get a node
-// at each end: the proxy's own nodes (every 25-60 degrees of a curve) and a cut close to one of
-// them would make short segments, and slivers on the surface beside them. So the chain is
-// discretised as one curve between its fixed nodes (B-rep vertices and the nodes the cuts made,
-// which the cut faces hold), and the proxy's nodes between them, which nothing else holds, slide
-// along the curve onto the nearest of the equal steps (their proxy positions stay: the proxy's
-// geometry does not change, only their image on the true edge).
-void BrepBoundary::discretise_chain(Index e, std::vector<ChordPiece>& pieces, const size::SizeField& h) {
-  for (ChordPiece& c : pieces)
-    if (c.ta > c.tb) std::swap(c.a, c.b), std::swap(c.ta, c.tb);
-  std::sort(pieces.begin(), pieces.end(), [](const ChordPiece& x, const ChordPiece& y) { return x.ta < y.ta; });
-  bool path = true;
-  for (std::size_t i = 1; i < pieces.size(); ++i)
-    if (pieces[i].a != pieces[i - 1].b || std::abs(pieces[i].ta - pieces[i - 1].tb) > 1e-9 * (1 + std::abs(pieces[i].ta))) path = false;
-  if (!path) {  // not one chain (never seen; kept safe): each piece alone
-    for (const ChordPiece& c : pieces) discretise_one(std::min(c.a, c.b), std::max(c.a, c.b), c.along, h);
-    return;
-  }
-  const ParametricCurve& curve = *in.edges[e].curve;
-  const std::size_t tess_nodes = px.tess.nodes.size();
-  auto fixed = [&](Index v) {
-    if (node_on_[v].kind != PointOn::kEdge || static_cast<std::size_t>(v) >= tess_nodes) return true;
-    for (Index f : model.faces_of_node(v))
-      if (model.faces[f].alive && model.faces[f].source < 0) return true;  // on a cut face
-    return false;
-  };
-  std::size_t first = 0;
-  while (first < pieces.size()) {
-    std::size_t last = first;  // pieces first..last run between two fixed nodes
-    while (last + 1 < pieces.size() && !fixed(pieces[last].b)) ++last;
-    const double t0 = pieces[first].ta, t1 = pieces[last].tb;
-    auto point_at = [&](double s) { return curve.point(t0 + s * (t1 - t0)); };
-    std::vector<double> cum;
-    const double rough = integrate(point_at, h, 16, &cum);
-    const int m = static_cast<int>(std::clamp(4 * rough * static_cast<double>(last - first + 1), 16.0, 4096.0));
-    const double total = m == 16 ? rough : integrate(point_at, h, m, &cum);
-    const int movable = static_cast<int>(last - first);
-    int factor = 1;
-    for (std::size_t i = first; i <= last; ++i) factor = std::max(factor, finer_factor(pieces[i].a, pieces[i].b));
-    const int n = std::max(movable + 1, std::max(1, static_cast<int>(std::lround(total))) * factor);
-    std::vector<double> t(n + 1);
-    t[0] = t0, t[n] = t1;
-    for (int k = 1; k < n; ++k) t[k] = t0 + step_at(cum, total * k / n) * (t1 - t0);
-    // the step each chain node takes: the ends 0 and n, the movable nodes the nearest free one
-    std::vector<int> step(movable + 2);
-    step[0] = 0, step[movable + 1] = n;
-    for (int i = 1; i <= movable; ++i) {
-      const double s = (pieces[first + i - 1].tb - t0) / (t1 - t0);
-      const double c = cum[std::clamp(static_cast<int>(std::lround(s * m)), 0, m)];
-      const int want = static_cast<int>(std::lround(total > 0 ? c / total * n : i));
-      step[i] = std::clamp(want, step[i - 1] + 1, n - (movable + 1 - i));
-      const Index v = pieces[first + i - 1].b;
-      nodes.on[v].t = t[step[i]];
-      nodes.x[v] = curve.point(t[step[i]]);
-    }
-    for (int i = 0; i <= movable; ++i) {
-      const ChordPiece& c = pieces[first + i];
-      const Index lo = std::min(c.a, c.b), hi = std::max(c.a, c.b);
-      auto& inner = edge_nodes[{lo, hi}];
-      inner.clear();
-      const double ta = t[step[i]], tb = t[step[i + 1]];
-      const Vec3 pa = model.nodes[c.a], pb = model.nodes[c.b];
-      for (int k = step[i] + 1; k < step[i + 1]; ++k) {
-        PointOn on = c.along;
-        on.t = t[k];
-        const double s = (t[k] - ta) / (tb - ta);
-        nodes.p.push_back(pa + s * (pb - pa));
-        nodes.x.push_back(curve.point(t[k]));
-        nodes.on.push_back(on);
-        inner.push_back(static_cast<Index>(nodes.x.size() - 1));
-      }
-      if (c.a > c.b) std::reverse(inner.begin(), inner.end());
-    }
-    first = last + 1;
   }
 }
 

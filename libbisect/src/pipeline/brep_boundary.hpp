@@ -10,7 +10,6 @@
 // or vertex exactly (ARCHITECTURE.md §1: every surface node lies on its face).
 #pragma once
 #include <array>
-#include <functional>
 #include <map>
 #include <vector>
 
@@ -70,19 +69,6 @@ class BrepBoundary {
   const PolyhedralModel& model;
 
  private:
-  // A model edge along a chord of a B-rep edge, with its ends' parameters on the edge.
-  struct ChordPiece {
-    Index a, b;
-    PointOn along;
-    double ta, tb;
-  };
-  void edge_params(Index a, Index b, const PointOn& along, double* ta, double* tb) const;
-  int finer_factor(Index a, Index b) const;
-  void discretise_one(Index a, Index b, const PointOn& along, const size::SizeField& h);
-  void discretise_chain(Index e, std::vector<ChordPiece>& pieces, const size::SizeField& h);
-  static double integrate(const std::function<Vec3(double)>& point_at, const size::SizeField& h, int m, std::vector<double>* cum);
-  static double step_at(const std::vector<double>& cum, double target);
-
   std::vector<PointOn> node_on_;
   std::vector<char> pole_;  // per B-rep vertex: the vertex of a degenerate edge (a pole)
   PointOn classify(Index v) const;

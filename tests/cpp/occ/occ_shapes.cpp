@@ -6,24 +6,20 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
-#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_Array1OfPnt.hxx>
-#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_CompSolid.hxx>
 #include <gp_Ax2.hxx>
 
-#include <cmath>
 #include <stdexcept>
 
 namespace bisect::test {
@@ -39,23 +35,6 @@ TopoDS_Shape make_box_minus_cylinder() {
   const TopoDS_Shape cyl = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(2, 2, -1), gp_Dir(0, 0, 1)), 1, 4).Shape();
   BRepAlgoAPI_Cut cut(box, cyl);
   if (!cut.IsDone()) throw std::runtime_error("box minus cylinder failed");
-  return cut.Shape();
-}
-
-TopoDS_Shape make_box_with_hole_and_fillets() {
-  const TopoDS_Shape box = BRepPrimAPI_MakeBox(60, 40, 20).Shape();
-  BRepFilletAPI_MakeFillet fillet(box);
-  for (TopExp_Explorer ex(box, TopAbs_EDGE); ex.More(); ex.Next()) {
-    const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
-    TopoDS_Vertex a, b;
-    TopExp::Vertices(e, a, b);
-    if (std::abs(BRep_Tool::Pnt(a).Z() - BRep_Tool::Pnt(b).Z()) > 1) fillet.Add(5, e);  // the vertical ones
-  }
-  fillet.Build();
-  if (!fillet.IsDone()) throw std::runtime_error("filleting the box failed");
-  const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -1), gp_Dir(0, 0, 1)), 8, 22).Shape();
-  BRepAlgoAPI_Cut cut(fillet.Shape(), hole);
-  if (!cut.IsDone()) throw std::runtime_error("box minus hole failed");
   return cut.Shape();
 }
 

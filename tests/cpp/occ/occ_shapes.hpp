@@ -15,10 +15,6 @@ TopoDS_Shape make_cylinder();
 TopoDS_Shape make_sphere();
 // the box [0,4] x [0,4] x [0,2] minus a cylinder of radius 1 through it on (2, 2, z): volume 32 - 2 pi
 TopoDS_Shape make_box_minus_cylinder();
-// [0,60] x [0,40] x [0,20] with its four vertical edges filleted at radius 5 and a through hole
-// of radius 8 on (30, 20, z): planar faces, quarter-cylinder fillets, a full cylinder with a seam;
-// volume 48000 - (4 - pi) 25 * 20 - 64 pi * 20
-TopoDS_Shape make_box_with_hole_and_fillets();
 // the boxes [0,1]^3 and [1,2] x [0,1] x [0,1] as a CompSolid sharing the face x = 1 (general fuse)
 TopoDS_Shape make_two_box_compsolid();
 // the box [0,4]^3 with a spherical cavity of radius 1 at its centre: one solid, two shells;

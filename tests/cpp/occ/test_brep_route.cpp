@@ -22,8 +22,6 @@
 #include "bisect/occ_checker.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
-#include "occ_checks.hpp"
-#include "occ_shapes.hpp"
 #include "shared_breps.hpp"
 
 namespace bisect {
@@ -168,34 +166,6 @@ TEST(BrepRouteCompSolid, OneConformingMeshWithAnInterface) {
         }
       }
     EXPECT_GT(shared, 50u) << name;
-  }
-}
-
-// The surface grid of a CSG part with fillets and a hole (the README's picture): no sliver where
-// a cut crosses a fillet's edge next to one of the proxy's nodes on it (brep_boundary.cpp: a
-// B-rep edge is discretised as one curve between its vertices and the cuts), so every surface
-// triangle keeps 20 degrees at the picture's count and below; the B-rep's own smallest angle
-// between edges is 90. (At R = 2·10^4 the grid's smallest angle is 19.9 degrees on this shape,
-// 20.8 on the same shape made by FreeCAD: the 20 degrees are not yet held at every count.)
-TEST(BrepRouteSurface, BoxWithHoleAndFilletsKeepsTwentyDegrees) {
-  const BrepInput in = test::input_of(test::make_box_with_hole_and_fillets(), "box with hole and fillets");
-  for (int R : {1000, 5000}) {
-    GenerateOptions opt;
-    opt.sizing.elements = R;
-    GenerateStats st;
-    const TetMesh m = generate_brep_mesh(in, opt, &st);
-    ASSERT_TRUE(validate(m).empty()) << R;
-    double least = 180;
-    for (std::size_t t = 0; t < m.num_tris(); ++t) {
-      const int npt = m.nodes_per_tri();
-      const Vec3 &a = m.nodes[m.tris[t * npt]], &b = m.nodes[m.tris[t * npt + 1]], &c = m.nodes[m.tris[t * npt + 2]];
-      auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)) * 180 / M_PI; };
-      least = std::min({least, angle(a, b, c), angle(b, c, a), angle(c, a, b)});
-    }
-    EXPECT_GE(least, 20.0) << "R " << R << ": " << m.num_tets() << " tets";
-    EXPECT_NEAR(least, st.surface_min_angle, 1e-6) << R;
-    const double volume = 60.0 * 40 * 20 - (4 - M_PI) * 25 * 20 - 64 * M_PI * 20;
-    EXPECT_NEAR(tet_volume(m), volume, 0.01 * volume) << R;
   }
 }
 
