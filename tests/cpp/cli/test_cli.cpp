@@ -1,6 +1,8 @@
 // bisect-mesh run as a user runs it: exit codes, the lines it prints, the one-line errors.
 #include <gtest/gtest.h>
 
+#include "cli_run.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,35 +15,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-};
+using bisect::test::CliResult;
+using bisect::test::count_lines;
+using bisect::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratch_dir() { return bisect::test::scratch_dir("test"); }
 
-fs::path scratch_dir() {
-  fs::path d = fs::temp_directory_path() / ("bisect_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
-
-CliResult run(const std::string& args) {
-  const fs::path d = scratch_dir();
-  const std::string cmd = std::string("'") + BISECT_CLI + "' " + args + " >'" + (d / "out").string() + "' 2>'" +
-                          (d / "err").string() + "'";
-  const int status = std::system(cmd.c_str());
-  CliResult r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(d / "out");
-  r.err = slurp(d / "err");
-  return r;
-}
+CliResult run(const std::string& args) { return bisect::test::run_cli(args, "test"); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
   const fs::path p = scratch_dir() / name;
@@ -50,12 +30,6 @@ fs::path write_file(const std::string& name, const std::string& text) {
 }
 
 const std::string kExamples = BISECT_EXAMPLES_DIR;
-
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 // (recursive bisection, the convex decomposition) say what failed but not in which file.
 #include <gtest/gtest.h>
 
+#include "cli_run.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,29 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratch() { return bisect::test::scratch_dir("2d"); }
 
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / ("bisect_cli_2d_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
-
-struct Result {
-  int code = -1;
-  std::string err;
-};
+using Result = bisect::test::CliResult;
 
 Result mesh(const fs::path& in, const fs::path& out) {
-  const std::string cmd = std::string("'") + BISECT_CLI + "' '" + in.string() + "' -o '" + out.string() + "' >/dev/null 2>'" +
-                          (scratch() / "err").string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(scratch() / "err")};
+  return bisect::test::run_cli("'" + in.string() + "' -o '" + out.string() + "'", "2d");
 }
 
 }  // namespace

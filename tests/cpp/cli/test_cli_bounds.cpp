@@ -3,6 +3,8 @@
 // refused before meshing, and --grading stays in the range the graded nodes handle.
 #include <gtest/gtest.h>
 
+#include "cli_run.hpp"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,46 +20,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-  double seconds = 0;
-};
+using Result = bisect::test::CliResult;
+using bisect::test::has;
+using bisect::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratch() { return bisect::test::scratch_dir("bounds"); }
 
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / ("bisect_cli_bounds_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+Result run(const std::string& args) { return bisect::test::run_cli(args, "bounds"); }
 
-Result run(const std::string& args) {
-  const fs::path d = scratch();
-  const std::string cmd = std::string("'") + BISECT_CLI + "' " + args + " >'" + (d / "out").string() + "' 2>'" +
-                          (d / "err").string() + "'";
-  const auto t0 = std::chrono::steady_clock::now();
-  const int status = std::system(cmd.c_str());
-  Result r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(d / "out");
-  r.err = slurp(d / "err");
-  return r;
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+int lines(const std::string& s) { return bisect::test::count_lines(s); }
 
 const std::string kCubes = "'" + std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly'";
 const std::string kSquares = "'" + std::string(BISECT_TEST_DATA) + "/square-subdomain-adjacent-square.poly2'";

@@ -3,6 +3,8 @@
 // exist, and a write cut off midway by the file size limit (RLIMIT_FSIZE, as a quota would).
 #include <gtest/gtest.h>
 
+#include "cli_run.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -19,61 +21,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
+using Result = bisect::test::CliResult;
+using bisect::test::has;
+using bisect::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path scratch() { return bisect::test::scratch_dir("outputs"); }
 
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / ("bisect_cli_outputs_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
-
-// bisect-mesh with `args`, its output in files; in the child the file size limit is `fsize`
-// bytes when > 0 (SIGXFSZ ignored, so that an oversized write fails with EFBIG, as on a quota).
+// bisect-mesh with `args`; in the child the file size limit is `fsize` bytes when > 0.
 Result run(const std::vector<std::string>& args, rlim_t fsize = 0) {
-  const fs::path out = scratch() / "stdout", err = scratch() / "stderr";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(o, 1);
-    ::dup2(e, 2);
-    if (fsize > 0) {
-      ::signal(SIGXFSZ, SIG_IGN);
-      const rlimit lim{fsize, fsize};
-      ::setrlimit(RLIMIT_FSIZE, &lim);
-    }
-    std::vector<char*> argv{const_cast<char*>(BISECT_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(BISECT_CLI, argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  bisect::test::ChildSetup setup;
+  setup.fsize = fsize;
+  return bisect::test::run_cli_argv(args, "outputs", setup);
 }
 
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+int lines(const std::string& s) { return bisect::test::count_lines(s); }
 
 const std::string kCubes = std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly";
 const std::string kSquares = std::string(BISECT_TEST_DATA) + "/square-subdomain-adjacent-square.poly2";

@@ -3,6 +3,8 @@
 // basic_filebuf::underflow ... Is a directory" (exit 3).
 #include <gtest/gtest.h>
 
+#include "cli_run.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -18,21 +20,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using Result = bisect::test::CliResult;
+using bisect::test::has;
+using bisect::test::slurp;
 
 fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / ("bisect_cli_paths_" + std::to_string(::getpid()));
-  fs::create_directories(d);
+  fs::path d = bisect::test::scratch_dir("paths");
   fs::permissions(d, fs::perms::all);  // the unprivileged child below writes its output here
   return d;
 }
@@ -40,38 +33,13 @@ fs::path scratch() {
 // bisect-mesh with `args`; when `as_user` > 0 and this process is root, the child first becomes
 // that user (root reads every file, so "unreadable" needs someone else).
 Result run(const std::vector<std::string>& args, uid_t as_user = 0) {
-  const fs::path out = scratch() / "stdout", err = scratch() / "stderr";
-  fs::remove(out);
-  fs::remove(err);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (as_user > 0 && ::geteuid() == 0 && (::setgid(as_user) != 0 || ::setuid(as_user) != 0)) ::_exit(126);
-    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
-    ::dup2(o, 1);
-    ::dup2(e, 2);
-    std::vector<char*> argv{const_cast<char*>(BISECT_CLI)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(BISECT_CLI, argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  scratch();
+  bisect::test::ChildSetup setup;
+  setup.as_user = as_user;
+  return bisect::test::run_cli_argv(args, "paths", setup);
 }
 
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+int lines(const std::string& s) { return bisect::test::count_lines(s); }
 
 const std::string kCubes = std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly";
 
