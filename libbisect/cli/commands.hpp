@@ -4,6 +4,7 @@
 #include <iosfwd>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace bisect::cli {
 
@@ -39,6 +40,11 @@ struct MeshOptions {
   int order = 1;              // --order 1|2
   bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
   double grading = 0;         // --grading G (0: uniform interior spacing)
+  // the B-rep size field (SizeOptions): --min-size, --max-size, --curvature-elements,
+  // --chord-deviation, --size-grading; brep_sizing lists the flags given, so that a polyhedral
+  // input, whose surface is its facets, refuses them by name
+  double min_size = 0, max_size = 0, curvature_elements = 12, chord_deviation = 0, size_grading = 0.3;
+  std::vector<std::string> brep_sizing;
   bool quads = false;         // --quads: 2D meshes get quadrilaterals (thesis 4.7.2)
   double max_memory_mb = 0;   // --max-memory MB (0: half of the physical memory)
   bool quiet = false;

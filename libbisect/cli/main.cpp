@@ -29,6 +29,11 @@ constexpr std::int64_t kMaxElements = 2147483647;
 constexpr double kMinGrading = 0.2;
 constexpr double kMaxGrading = 10;
 const std::string kGradingRange = "0 (off) or a number from 0.2 to 10";
+// --size-grading: how fast the B-rep size field may grow per unit of distance. Below 0.05 the
+// sizes hardly grow away from the finest feature, so the count explodes; above 10 the field no
+// longer grades at all (a jump from the finest to the coarsest size within one element).
+constexpr double kMinSizeGrading = 0.05;
+constexpr double kMaxSizeGrading = 10;
 
 const char* kUsage =
     "usage: bisect-mesh INPUT -o OUTPUT [OPTIONS]\n"
@@ -51,6 +56,15 @@ const char* kUsage =
     "                  core); the mesh is the same for every N\n"
     "  --grading G     interior spacing grows from a short boundary edge's by G per unit of\n"
     "                  distance, up to Np (default 0: uniform Np inside; else 0.2 to 10)\n"
+    "  --min-size H    B-rep: no element edge shorter than H, even on small features and\n"
+    "                  tight curvature (default 0: no bound)\n"
+    "  --max-size H    B-rep: no element edge longer than H (default 0: no bound)\n"
+    "  --curvature-elements K  B-rep: at least K elements per full turn on curved faces and\n"
+    "                  edges (default 12; 0: no bound; else at least 3)\n"
+    "  --chord-deviation D  B-rep: element edges on curved faces at most D from the surface\n"
+    "                  (default 0: no bound)\n"
+    "  --size-grading G  B-rep: element sizes grow by at most G per unit of distance from a\n"
+    "                  small one (default 0.3; 0.05 to 10)\n"
     "  --boundary-flips  also re-triangulate the outer boundary within each input face by the\n"
     "                  2-2 transformation (thesis 7.5; off by default)\n"
     "  --insertion M   how each cell's nodes go in: minmax (thesis 7.6: local min-max\n"
@@ -83,6 +97,14 @@ const char* kUsage =
     "exit codes: 0 done; 2 bad input or options (also: a job over --max-memory, an input or\n"
     "            output path that cannot be used, a file that could not be written whole);\n"
     "            3 the mesher could not finish\n";
+
+// The last value given for FLAG, as typed (for messages that quote two flags).
+std::string args_value(const std::vector<std::string>& args, const std::string& flag) {
+  std::string v;
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == flag) v = args[i + 1];
+  return v;
+}
 
 int usage_error(const std::string& what) {
   std::cerr << "bisect-mesh: " << what << " (see bisect-mesh --help)\n";
@@ -156,6 +178,27 @@ int main(int argc, char** argv) {
       const auto g = parse_real(a, v, kMinGrading, false, kMaxGrading, true, kGradingRange, &bad);
       if (!g) return usage_error(bad);
       mesh.grading = *g;
+    } else if (a == "--min-size" || a == "--max-size" || a == "--chord-deviation") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a length");
+      const auto x = parse_real(a, v, 0, true, 1e300, true, "0 (no bound) or a positive length", &bad);
+      if (!x) return usage_error(bad);
+      (a == "--min-size" ? mesh.min_size : a == "--max-size" ? mesh.max_size : mesh.chord_deviation) = *x;
+      mesh.brep_sizing.push_back(a);
+    } else if (a == "--curvature-elements") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number of elements per turn");
+      const auto x = parse_real(a, v, 3, false, 1e4, true, "0 (no bound) or a number of elements per turn from 3 to 10000", &bad);
+      if (!x) return usage_error(bad);
+      mesh.curvature_elements = *x;
+      mesh.brep_sizing.push_back(a);
+    } else if (a == "--size-grading") {
+      std::string v;
+      if (!value(&v)) return usage_error(a + " needs a number");
+      const auto g = parse_real(a, v, kMinSizeGrading, false, kMaxSizeGrading, false, "a number from 0.05 to 10", &bad);
+      if (!g) return usage_error(bad);
+      mesh.size_grading = *g;
+      mesh.brep_sizing.push_back(a);
     } else if (a == "--boundary-flips") {
       mesh.boundary_flips = true;
     } else if (a == "--order") {
@@ -175,6 +218,8 @@ int main(int argc, char** argv) {
     }
   }
   if (positional.empty()) return usage_error("no command or input given");
+  if (mesh.max_size > 0 && mesh.min_size > mesh.max_size)
+    return usage_error("--min-size " + args_value(args, "--min-size") + " exceeds --max-size " + args_value(args, "--max-size"));
   const std::string& cmd = positional[0];
   const bool command = cmd == "info" || cmd == "quality";
   if (!command) {

@@ -64,6 +64,9 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
   io::check_readable_file(input);
   io::check_output_path(opt.output);
   if (!opt.stats.empty()) io::check_output_path(opt.stats);
+  if (!is_brep_path(input) && !opt.brep_sizing.empty())
+    throw InputError(opt.brep_sizing.front() + " sets the size field of B-rep inputs (.brep, .step, .iges); " + input +
+                     " is meshed on its own facets (use -s or -n)");
   if (ends_with(input, ".poly2")) {  // a planar mesh (thesis ch. 4)
     if (opt.cells_only) throw InputError("--cells-only is for polyhedral inputs; " + input + " is a 2D input");
     if (!ends_with(opt.output, ".vtu")) throw InputError(opt.output + ": 2D meshes are written as .vtu");
@@ -100,6 +103,11 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.order = opt.order;
     go.optimize.boundary_flips = opt.boundary_flips;
     go.sizing.grading = opt.grading;
+    go.sizing.min_size = opt.min_size;
+    go.sizing.max_size = opt.max_size;
+    go.sizing.curvature_elements = opt.curvature_elements;
+    go.sizing.chord_deviation = opt.chord_deviation;
+    go.sizing.size_grading = opt.size_grading;
     GenerateStats st;
     // a B-rep (.brep, .step, .iges) goes the true-surface route, a polyhedral input the thesis's
     TetMesh mesh;
