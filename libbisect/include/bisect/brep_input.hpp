@@ -53,6 +53,12 @@ struct BrepSolid {
   // Every face of every shell of the solid, outer and inner (an inner shell bounds a cavity).
   // A face listed by two solids is an interface between them and is meshed once.
   std::vector<Index> faces;
+  // FreeCAD's number of this solid in the whole shape (0-based) when the input is a part of a
+  // larger one (one connected group of a compound's solids); -1: its place in `solids`
+  Index number = -1;
+  // its bounding box and volume, when the reader knows them (volume 0: unknown)
+  Vec3 bbox_min = Vec3::Zero(), bbox_max = Vec3::Zero();
+  double volume = 0;
 };
 
 // A tessellation of the whole shape (OpenCASCADE's BRepMesh): each edge is discretised once, so
@@ -95,5 +101,9 @@ inline std::string face_name(Index f) { return "Face" + std::to_string(f + 1); }
 inline std::string edge_name(Index e) { return "Edge" + std::to_string(e + 1); }
 inline std::string vertex_name(Index v) { return "Vertex" + std::to_string(v + 1); }
 inline std::string solid_name(Index s) { return "Solid" + std::to_string(s + 1); }
+// Solid s of this input as FreeCAD names it in the whole shape.
+inline std::string solid_name(const BrepInput& in, Index s) {
+  return solid_name(s >= 0 && s < static_cast<Index>(in.solids.size()) && in.solids[s].number >= 0 ? in.solids[s].number : s);
+}
 
 }  // namespace bisect

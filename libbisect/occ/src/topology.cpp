@@ -2,6 +2,8 @@
 // numbered as FreeCAD numbers them.
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -160,6 +162,22 @@ BrepInput brep_input_from_shape(const TopoDS_Shape& shape, const std::string& so
       }
     }
   });
+  // Several solids: each one's box and volume, by which the pipeline meshes groups of solids
+  // that share no face apart and shares the count among them (brep_generate.cpp).
+  if (m.solids.size() > 1)
+    for (size_t s = 0; s < m.solids.size(); ++s)
+      guard([&] { return source + ": " + solid_name(static_cast<Index>(s)); }, "OpenCASCADE could not measure it", [&] {
+        Bnd_Box box;
+        BRepBndLib::Add(m.solids[s], box, Standard_False);
+        if (!box.IsVoid()) {
+          double x0, y0, z0, x1, y1, z1;
+          box.Get(x0, y0, z0, x1, y1, z1);
+          in.solids[s].bbox_min = Vec3(x0, y0, z0), in.solids[s].bbox_max = Vec3(x1, y1, z1);
+        }
+        GProp_GProps props;
+        BRepGProp::VolumeProperties(m.solids[s], props);
+        in.solids[s].volume = std::abs(props.Mass());
+      });
   for (int i = 1; i <= m.faces.Extent(); ++i) {
     const TopoDS_Face& f = TopoDS::Face(m.faces(i));
     const bool rev = reversed[i - 1] < 0 ? f.Orientation() == TopAbs_REVERSED : reversed[i - 1] > 0;

@@ -22,7 +22,7 @@ struct Side {
 
 }  // namespace
 
-std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
+std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
                                     bool last_resort_allowed, BrepCellCounts* counts) {
   const std::size_t n = d.cells.size();
@@ -81,7 +81,7 @@ std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, 
     job.centre = volume > 0 ? Vec3(centre / volume) : cells[root].centre;
     job.centre_p = cells[root].centre_p;
     job.region = d.cells[root].source_region;
-    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(d.cells[root].source_region);
+    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(in, d.cells[root].source_region);
     if (mem.size() > 1) job.name += " (joined with " + std::to_string(mem.size() - 1) + " neighbour" + (mem.size() > 2 ? "s)" : ")");
     return job;
   };

@@ -31,7 +31,7 @@ struct BrepCellCounts {
 
 // One job per cell or group of joined cells. X, P: the nodes' true and proxy positions. Throws
 // MeshingError naming the cell when none of the three ways works.
-std::vector<CellJob> brep_cell_jobs(const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
+std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
                                     bool last_resort_allowed, BrepCellCounts* counts);
 

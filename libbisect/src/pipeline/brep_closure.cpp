@@ -18,7 +18,7 @@ void check_solids_closed(const BrepInput& in) {
         }
     for (const auto& [e, use] : uses)
       if (use.first < 2)
-        throw InputError(in.source + ": " + solid_name(static_cast<Index>(s)) + " is not closed: " + edge_name(e) + " bounds only " +
+        throw InputError(in.source + ": " + solid_name(in, static_cast<Index>(s)) + " is not closed: " + edge_name(e) + " bounds only " +
                          face_name(use.second) + " (a solid needs every edge shared by two of its faces)");
   }
 }

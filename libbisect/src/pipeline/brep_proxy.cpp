@@ -150,7 +150,13 @@ BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
   px.input.nodes = X;
   px.input.source = in.source;
   std::vector<std::vector<Index>> faces_of_brep(in.faces.size());
+  // only the faces of the solids meshed: a face of an open shell beside them, or of another
+  // group of a compound's solids (meshed on its own, brep_generate.cpp), bounds nothing here
+  std::vector<char> of_solid(in.faces.size(), 0);
+  for (const BrepSolid& s : in.solids)
+    for (Index f : s.faces) of_solid[f] = 1;
   for (std::size_t f = 0; f < in.faces.size(); ++f) {
+    if (!of_solid[f]) continue;
     const auto& tris = t.faces[f].tris;
     if (tris.empty()) throw InputError(in.source + ": " + face_name(static_cast<Index>(f)) + " could not be tessellated (no triangles)");
     if (in.faces[f].planar) {

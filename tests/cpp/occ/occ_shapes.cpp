@@ -17,6 +17,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_CompSolid.hxx>
 #include <gp_Ax2.hxx>
 
@@ -25,6 +26,16 @@
 namespace bisect::test {
 
 TopoDS_Shape make_box() { return BRepPrimAPI_MakeBox(1, 2, 3).Shape(); }
+
+TopoDS_Shape make_touching_compound() {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, BRepPrimAPI_MakeBox(2, 2, 2).Shape());
+  b.Add(c, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(1, 1, 2), gp_Dir(0, 0, 1)), 0.8, 2).Shape());
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(4, 0, 0), 1, 1, 1).Shape());
+  return c;
+}
 
 TopoDS_Shape make_cylinder() { return BRepPrimAPI_MakeCylinder(1, 2).Shape(); }
 

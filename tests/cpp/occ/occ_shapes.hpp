@@ -20,6 +20,10 @@ TopoDS_Shape make_two_box_compsolid();
 // the box [0,4]^3 with a spherical cavity of radius 1 at its centre: one solid, two shells;
 // volume 64 - 4 pi / 3
 TopoDS_Shape make_box_with_cavity();
+// a compound of three solids that share no face: the box [0,2]^3, a cylinder of radius 0.8 and
+// height 2 standing on its top face at (1, 1, 2) (touching it, not fused), and the box
+// [4,5] x [0,1] x [0,1] apart; volumes 8, 1.28 pi, 1
+TopoDS_Shape make_touching_compound();
 // make_box_minus_cylinder with every surface and curve converted to B-splines
 TopoDS_Shape make_nurbs_part();
 // a B-spline profile revolved half a turn about the z axis: surfaces of revolution over a

@@ -1,0 +1,79 @@
+// A compound of solids that share no face (parts that touch or lie apart, as assemblies exported
+// to one file are): each group of solids is meshed on its own, the count shared by volume, the
+// tetrahedra tagged with FreeCAD's solid numbers, and no node shared between bodies.
+#include <gtest/gtest.h>
+
+#include <BRepTools.hxx>
+
+#include <cmath>
+#include <sstream>
+#include <set>
+#include <vector>
+
+#include "bisect/generate.hpp"
+#include "bisect/occ.hpp"
+#include "bisect/validate.hpp"
+#include "occ_checks.hpp"
+#include "occ_shapes.hpp"
+
+namespace bisect {
+namespace {
+
+double tet_volume(const TetMesh& m, std::size_t t) {
+  const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
+             &d = m.nodes[m.tet_node(t, 3)];
+  return (b - a).dot((c - a).cross(d - a)) / 6;
+}
+
+TEST(BrepCompound, SeparateBodiesAreMeshedEachOnItsOwn) {
+  // through a BREP string, as FreeCAD hands a shape over (shape.exportBrepToString()); the shape
+  // as built in memory fills the cylinder differently (not understood; FreeCAD never passes one)
+  std::ostringstream brep;
+  BRepTools::Write(test::make_touching_compound(), brep);
+  const BrepInput in = load_brep_string(brep.str(), "touching compound");
+  ASSERT_EQ(in.solids.size(), 3u);
+  const double want_volume[3] = {8, 1.28 * M_PI, 1};
+  for (int s = 0; s < 3; ++s) EXPECT_NEAR(in.solids[s].volume, want_volume[s], 1e-6 * want_volume[s]);
+  for (int order : {1, 2}) {
+    GenerateOptions opt;
+    opt.sizing.elements = 6000;
+    opt.order = order;
+    std::vector<double> fractions;
+    opt.progress = [&](double x) {
+      fractions.push_back(x);
+      return true;
+    };
+    GenerateStats st;
+    const TetMesh m = generate_brep_mesh(in, opt, &st);
+    EXPECT_TRUE(validate(m).empty()) << "order " << order;
+    EXPECT_NEAR(static_cast<double>(m.num_tets()), 6000, 1200) << "order " << order;
+    EXPECT_EQ(st.tets, static_cast<std::int64_t>(m.num_tets()));
+    EXPECT_EQ(st.regions, 3);
+    // each body's volume is its solid's (the cylinder within its chords' error)
+    double volume[3] = {0, 0, 0};
+    std::vector<int> body(m.nodes.size(), -1);
+    bool shared = false;
+    for (std::size_t t = 0; t < m.num_tets(); ++t) {
+      ASSERT_GE(m.region[t], 0);
+      ASSERT_LT(m.region[t], 3);
+      volume[m.region[t]] += tet_volume(m, t);
+      for (int k = 0; k < m.nodes_per_tet(); ++k) {
+        int& b = body[m.tet_node(t, k)];
+        if (b >= 0 && b != m.region[t]) shared = true;
+        b = m.region[t];
+      }
+    }
+    EXPECT_FALSE(shared) << "a node belongs to two bodies";
+    for (int s = 0; s < 3; ++s) EXPECT_NEAR(volume[s], want_volume[s], 0.02 * want_volume[s]) << "Solid" << s + 1;
+    // the boundary triangles carry the B-rep faces of all three bodies (6 + 3 + 6 faces)
+    std::set<Index> faces(m.tri_tag.begin(), m.tri_tag.end());
+    EXPECT_EQ(faces.size(), in.faces.size());
+    // progress runs from the first body to the last without going back, and ends at 1
+    ASSERT_FALSE(fractions.empty());
+    for (std::size_t i = 1; i < fractions.size(); ++i) EXPECT_GE(fractions[i], fractions[i - 1] - 1e-12);
+    EXPECT_NEAR(fractions.back(), 1.0, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace bisect
