@@ -42,7 +42,8 @@ Solved but not compared (see SOLVE_ONLY):
     displacement holds an arbitrary rigid drift and varies between runs of the same mesh
 
 Known BisectMesh failures, marked expectedFailure (see KNOWN_MESHER_FAILURES):
-    constraint_contact_solid_solid, constraint_transform_torque: MeshingError at the shipped count
+    constraint_transform_torque: MeshingError at the shipped count (constraint_contact_solid_solid
+    meshes since cells that no point sees whole are filled by Delaunay boundary recovery)
 
 Left out, with the reason (see LEFT_OUT): the shell, beam and 2D examples, the frequency and
 buckling analyses, the Elmer-only examples, constraint_centrif (its fixed faces hold only one of
@@ -92,11 +93,6 @@ EXAMPLES = {
 # Examples where BisectMesh itself fails (measured on branch brep-fixes): the test is marked
 # expectedFailure, so that it turns into an unexpected success (a failing run) once fixed.
 KNOWN_MESHER_FAILURES = {
-    "constraint_contact_solid_solid": (
-        "mesh_shape(elements=1316, order=2) raises MeshingError: convex cell 2 of Solid2: no point "
-        "sees its whole boundary, even joined with its neighbours, and its proxy's filling cannot be "
-        "untangled (the cell is narrower than the curved face's bulge next to it). Same at 250 to "
-        "4000 tetrahedra, order 1 or 2, with hints=True or curvature_elements 24/48; meshes at 8000"),
     "constraint_transform_torque": (
         "mesh_shape(elements=2869, order=2) raises MeshingError: convex cell 8 of Solid1 (joined with "
         "4 neighbours): no point sees its whole boundary, even joined with its neighbours, and its "

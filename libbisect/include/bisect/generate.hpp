@@ -98,6 +98,7 @@ struct GenerateStats {
   std::int64_t straightened_edges = 0;
   std::int64_t proxy_cells = 0;  // cells filled in the proxy's geometry (proxy_fill.hpp)
   std::int64_t joined_cells = 0; // cells joined with a neighbour to be seen whole (brep_cells.hpp)
+  std::int64_t recovered_cells = 0; // cells filled by Delaunay boundary recovery (tet/recovery_fill.hpp)
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

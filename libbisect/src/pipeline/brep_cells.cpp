@@ -92,6 +92,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   };
   *counts = {};
   std::vector<char> last_resort(n, 0);  // cells filled in the proxy keeping fixed inverted tetrahedra
+  std::vector<char> recover(n, 0);      // cells filled by boundary recovery
   for (std::size_t c = 0; c < n; ++c) {
     if (group[c] != static_cast<Index>(c)) continue;
     const std::vector<Index> group_before = group;
@@ -117,6 +118,13 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         // the last resort: the cell alone, filled in the proxy, a tetrahedron of four boundary
         // nodes left inverted for the global optimisation's flips
         group = group_before, members = members_before, counts->joined = joined_before;
+        // the cell alone, by Delaunay boundary recovery: no point need see it whole
+        CellJob recovered = job_of(static_cast<Index>(c));
+        recovered.recover = true;
+        if (fill_job_works(recovered, X, &P, delaunay)) {
+          recover[c] = 1;
+          break;
+        }
         CellJob alone = job_of(static_cast<Index>(c));
         alone.in_proxy = alone.keep_fixed_inverted = true;
         if (!last_resort_allowed || !fill_job_works(alone, X, &P, delaunay))
@@ -136,7 +144,10 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   for (std::size_t c = 0; c < n; ++c) {
     if (group[c] != static_cast<Index>(c)) continue;
     jobs.push_back(job_of(static_cast<Index>(c)));
-    if (members[c].size() == 1 && !star(jobs.back())) {
+    if (recover[c]) {
+      jobs.back().recover = true;
+      ++counts->recovered;
+    } else if (members[c].size() == 1 && !star(jobs.back())) {
       jobs.back().in_proxy = true, jobs.back().keep_fixed_inverted = last_resort[c] != 0;
       ++counts->in_proxy;
     }

@@ -4,7 +4,9 @@
 // may not be: it is filled in the proxy's geometry, where it is convex (proxy_fill.hpp), when
 // the tetrahedra made there can be untangled on the true geometry; otherwise it is joined with
 // its neighbours across cut faces (a few at most) until a point sees the group whole. Failing
-// that (a caller that can try a finer proxy first says so), the last resort: the cell alone in
+// that, the cell alone by Delaunay boundary recovery (tet/recovery_fill.hpp), which needs no
+// point that sees it whole; failing that too (a caller that can try a finer proxy first says
+// so), the last resort: the cell alone in
 // the proxy's geometry, a tetrahedron of four boundary nodes allowed to stay inverted for the
 // global optimisation to flip away (the finished mesh is checked).
 #pragma once
@@ -27,10 +29,11 @@ struct BrepCell {
 struct BrepCellCounts {
   std::int64_t in_proxy = 0;  // cells filled in the proxy's geometry
   std::int64_t joined = 0;    // cells joined with a neighbour
+  std::int64_t recovered = 0; // cells filled by Delaunay boundary recovery (tet/recovery_fill.hpp)
 };
 
 // One job per cell or group of joined cells. X, P: the nodes' true and proxy positions. Throws
-// MeshingError naming the cell when none of the three ways works.
+// MeshingError naming the cell when none of the four ways works.
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
                                     bool last_resort_allowed, BrepCellCounts* counts);

@@ -158,6 +158,7 @@ TetMesh generate_connected(const BrepInput& in, const GenerateOptions& opt, Gene
         best_miss = miss, filled = std::move(cells), st.spacing = np;
         best = std::move(placed);
         st.proxy_cells = cell_counts.in_proxy, st.joined_cells = cell_counts.joined;
+        st.recovered_cells = cell_counts.recovered;
         best.X = std::move(X);
       }
       if (opt.sizing.size > 0 || best_miss <= 0.1 * want) break;
@@ -333,7 +334,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
     total.convex_cells += st.convex_cells, total.helper_nodes += st.helper_nodes, total.helpers_removed += st.helpers_removed;
     total.skipped_nodes += st.skipped_nodes, total.flips += st.flips, total.sliver_moves += st.sliver_moves;
     total.fillings += st.fillings, total.graded_nodes += st.graded_nodes, total.straightened_edges += st.straightened_edges;
-    total.proxy_cells += st.proxy_cells, total.joined_cells += st.joined_cells;
+    total.proxy_cells += st.proxy_cells, total.joined_cells += st.joined_cells, total.recovered_cells += st.recovered_cells;
     total.surface_min_angle = g == 0 ? st.surface_min_angle : std::min(total.surface_min_angle, st.surface_min_angle);
     total.spacing = std::max(total.spacing, st.spacing);
     total.init_geom += st.init_geom, total.bisect += st.bisect, total.gen_nodes += st.gen_nodes;

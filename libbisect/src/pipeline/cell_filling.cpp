@@ -7,6 +7,7 @@
 #include "bisect/errors.hpp"
 #include "pipeline/proxy_fill.hpp"
 #include "tet/cell_fill.hpp"
+#include "tet/recovery_fill.hpp"
 #include "util/ordered_parallel.hpp"
 
 namespace bisect::pipeline {
@@ -38,7 +39,9 @@ CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const s
   std::vector<Index> interior;
   for (Index v : job.interior) interior.push_back(local(v));
   try {
-    if (job.in_proxy) {
+    if (job.recover) {
+      out.tets = tet::fill_by_recovery(X, boundary, interior, &out.stats);
+    } else if (job.in_proxy) {
       std::vector<Vec3> P;
       P.reserve(out.global.size() + 1);
       for (Index v : out.global) P.push_back((*proxy)[v]);

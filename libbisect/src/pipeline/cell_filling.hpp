@@ -25,6 +25,9 @@ struct CellJob {
   // (fill_cell_jobs' P), the cell being convex there, when no point sees it whole as it is.
   bool in_proxy = false;
   bool keep_fixed_inverted = false;  // in_proxy: the last resort (proxy_fill.hpp)
+  // The B-rep route: filled by Delaunay boundary recovery (tet/recovery_fill.hpp), when neither
+  // the star nor the proxy's geometry fills it
+  bool recover = false;
   Vec3 centre_p = Vec3::Zero();  // the proxy cell's centroid
 };
 

@@ -117,7 +117,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": \"" << s.count_floor_reason << "\", \"surface_min_angle\": " << s.surface_min_angle
-    << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells
+    << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
     << "}, \"quality\": " << quality_json(q) << "}";

@@ -1,0 +1,54 @@
+// A rod (radius 5, length 200: one convex cell in the proxy) is a cell that no point sees whole
+// once its faces lie on the true cylinder: the far triangles are seen edge-on from its middle and
+// the bulge tilts them past. At 2·10^4 elements it is filled by Delaunay boundary recovery
+// (tet/recovery_fill.hpp). (At 2,000 its coarse grid is not a Delaunay surface and the rod is
+// still refused, naming the cell: README, limits.)
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepTools.hxx>
+
+#include <cmath>
+#include <sstream>
+
+#include "bisect/generate.hpp"
+#include "bisect/occ.hpp"
+#include "bisect/validate.hpp"
+
+namespace bisect {
+namespace {
+
+BrepInput rod() {
+  std::ostringstream brep;
+  BRepTools::Write(BRepPrimAPI_MakeCylinder(5, 200).Shape(), brep);
+  return load_brep_string(brep.str(), "rod");
+}
+
+double volume(const TetMesh& m) {
+  double v = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
+               &d = m.nodes[m.tet_node(t, 3)];
+    v += (b - a).dot((c - a).cross(d - a)) / 6;
+  }
+  return v;
+}
+
+TEST(BrepLongCells, ARodIsFilledByBoundaryRecovery) {
+  const BrepInput in = rod();
+  GenerateOptions opt;
+  opt.sizing.elements = 20000;
+  GenerateStats st;
+  const TetMesh m = generate_brep_mesh(in, opt, &st);
+  EXPECT_TRUE(validate(m).empty());
+  EXPECT_GE(st.recovered_cells, 1);
+  EXPECT_NEAR(static_cast<double>(m.num_tets()), 20000, 4000);
+  // within the chords' error: at 12 or more segments per turn the section is at least the
+  // inscribed 12-gon's, 4.5% under the circle's
+  const double v = volume(m), want = 5000 * M_PI;
+  EXPECT_LE(v, want * (1 + 1e-9));
+  EXPECT_GE(v, want * 12 / (2 * M_PI) * std::sin(2 * M_PI / 12));
+}
+
+}  // namespace
+}  // namespace bisect
