@@ -6,6 +6,10 @@
 # The commands are registered here, at start-up, not in Initialize(): they exist in every
 # workbench from the start, and the FEM workbench gets a BisectMesh toolbar and its Mesh menu the
 # BisectMesh commands (bisectmesh/gui/commands.py says how).
+#
+# Without its compiled module (bisectmesh._core not built or not installed) the workbench still
+# loads: one line in the report view names the command that builds it, and the commands stay
+# greyed out, saying the same in their tooltips. Nothing here imports the compiled module.
 
 import FreeCAD
 import FreeCADGui
@@ -30,8 +34,9 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = icon_path("BisectMesh.svg")
 
     def Initialize(self):
-        from bisectmesh.gui import commands
+        from bisectmesh.gui import commands, report_core_problem
 
+        report_core_problem(load=True)  # one line, once, if the compiled module cannot be loaded
         self.appendToolbar("BisectMesh", list(commands.COMMANDS))
         self.appendMenu("&BisectMesh", list(commands.COMMANDS))
 

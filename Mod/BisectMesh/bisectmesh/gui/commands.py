@@ -117,9 +117,12 @@ def connect_fem_menu():
 
 def set_up_at_start():
     """What InitGui.py runs after importing this module (which registered the commands): the FEM
-    toolbar and the FEM menu entries, the preferences page and the watch on the Parts' view
-    resolution (view_watch.py). Each part on its own: one failing does not stop the others."""
-    for step in (install_fem_toolbar, connect_fem_menu, _preferences_page, _view_watch):
+    toolbar and the FEM menu entries, the preferences page, the watch on the Parts' view
+    resolution (view_watch.py), and one line in the report view when the compiled module is
+    missing. Each part on its own: one failing does not stop the others."""
+    from . import report_core_problem
+
+    for step in (install_fem_toolbar, connect_fem_menu, _preferences_page, _view_watch, report_core_problem):
         try:
             step()
         except Exception as err:  # FreeCAD must start whatever happens here
