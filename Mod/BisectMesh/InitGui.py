@@ -47,14 +47,14 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         pass
 
     def ContextMenu(self, recipient):
-        from bisectmesh.gui import command_mesh, command_quality, command_remesh
+        from bisectmesh.gui import command_mesh, command_quality, command_region, command_remesh
 
         if recipient != "Tree":
             return
         if command_mesh.selected_solid() is not None:
             self.appendContextMenu("", [command_mesh.COMMAND_NAME])
         if command_remesh.selected_mesh_object() is not None:
-            self.appendContextMenu("", [command_remesh.COMMAND_NAME])
+            self.appendContextMenu("", [command_remesh.COMMAND_NAME, command_region.COMMAND_NAME])
         if command_quality.selected_fem_mesh() is not None:
             self.appendContextMenu("", [command_quality.COMMAND_NAME])
 

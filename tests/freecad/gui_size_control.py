@@ -9,7 +9,8 @@ Run it under Xvfb from the repository root after building:
 It sets BisectMesh's defaults on its page of Edit > Preferences (the dialog itself, OK pressed)
 and checks that they are stored and that the mesh panel starts from them; changes a Part's view
 Deviation and checks that its mesh object with UseResolutionHints is marked within the watch's second
-(no recompute), and one without is not; adds a FEM mesh region, checks that it shows under the mesh
+(no recompute), and one without is not; adds a FEM mesh region with the Mesh region command (FEM's
+panel for it opens), checks that it shows under the mesh
 and in the panel, re-meshes with the Re-mesh command and measures smaller elements on the
 region's face; and sets MaxSize in the object's panel. Screenshots: preferences_page.png,
 mesh_panel_regions.png. The user's BisectMesh preferences are restored at the end.
@@ -92,7 +93,6 @@ def set_preferences_in_the_dialog(values):
 
 def run():
     import numpy as np
-    import ObjectsFem
 
     import bisectmesh
     import fc_helpers
@@ -163,7 +163,18 @@ def run():
         hole_name, hole = face_named(part.Shape, "Cylinder")
         obj = bisectmesh.make_mesh_object(doc, part, size=2.0, order=1, curvature_elements=12)
         bisectmesh.remesh(obj)
-        region = ObjectsFem.makeMeshRegion(doc, obj, 0.5, "HoleRegion")
+        # the Mesh region command: FEM's region object and FEM's own task panel for it
+        select(obj)
+        check(FreeCADGui.Command.get("BisectMesh_MeshRegion").isActive(), "Mesh region is active on the mesh")
+        FreeCADGui.runCommand("BisectMesh_MeshRegion")
+        settle(500)
+        regions = list(obj.MeshRegionList)
+        check(len(regions) == 1 and mesh_regions.is_mesh_region(regions[0]), "the command added a region to the mesh")
+        check(FreeCADGui.Control.activeDialog(), "and opened FEM's mesh region panel")
+        dialog_button(QtGui.QDialogButtonBox.Cancel).click()
+        settle(300)
+        region = regions[0]
+        region.CharacteristicLength = 0.5
         region.References = [(part, (hole_name,))]
         doc.recompute()
         check(obj.NeedsRemesh and "mesh region" in obj.MeshStatus, "a new region marks the mesh: %r" % obj.MeshStatus)

@@ -19,11 +19,12 @@ The FEM workbench of FreeCAD 0.20 gets:
 
 import FreeCAD
 
-from . import command_mesh, command_quality, command_remesh
+from . import command_mesh, command_quality, command_region, command_remesh
 
 # in toolbar and menu order
-COMMANDS = (command_mesh.COMMAND_NAME, command_remesh.COMMAND_NAME, command_quality.COMMAND_NAME)
-_REGISTER = (command_mesh.register, command_remesh.register, command_quality.register)
+COMMANDS = (command_mesh.COMMAND_NAME, command_remesh.COMMAND_NAME, command_region.COMMAND_NAME,
+            command_quality.COMMAND_NAME)
+_REGISTER = (command_mesh.register, command_remesh.register, command_region.register, command_quality.register)
 
 FEM_WORKBENCH = "FemWorkbench"
 TOOLBAR_NAME = "BisectMesh"
