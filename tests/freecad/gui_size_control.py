@@ -96,7 +96,7 @@ def run():
 
     import bisectmesh
     import fc_helpers
-    from bisectmesh import mesh_object, mesh_regions, preferences
+    from bisectmesh import mesh_regions, preferences
     from bisectmesh.gui import mesh_panel
     from test_mesh_regions import face_named, mean_edge_length
 
