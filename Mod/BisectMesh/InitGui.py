@@ -6,6 +6,10 @@
 # The commands are registered here, at start-up, not in Initialize(): they exist in every
 # workbench from the start, and the FEM workbench gets a BisectMesh toolbar and its Mesh menu the
 # BisectMesh commands (bisectmesh/gui/commands.py says how).
+#
+# Without its compiled module (bisectmesh._core not built or not installed) the workbench still
+# loads: one line in the report view names the command that builds it, and the commands stay
+# greyed out, saying the same in their tooltips. Nothing here imports the compiled module.
 
 import FreeCAD
 import FreeCADGui
@@ -30,8 +34,9 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = icon_path("BisectMesh.svg")
 
     def Initialize(self):
-        from bisectmesh.gui import commands
+        from bisectmesh.gui import commands, report_core_problem
 
+        report_core_problem(load=True)  # one line, once, if the compiled module cannot be loaded
         self.appendToolbar("BisectMesh", list(commands.COMMANDS))
         self.appendMenu("&BisectMesh", list(commands.COMMANDS))
 
@@ -42,14 +47,14 @@ class BisectMeshWorkbench(FreeCADGui.Workbench):
         pass
 
     def ContextMenu(self, recipient):
-        from bisectmesh.gui import command_mesh, command_quality, command_remesh
+        from bisectmesh.gui import command_mesh, command_quality, command_region, command_remesh
 
         if recipient != "Tree":
             return
         if command_mesh.selected_solid() is not None:
             self.appendContextMenu("", [command_mesh.COMMAND_NAME])
         if command_remesh.selected_mesh_object() is not None:
-            self.appendContextMenu("", [command_remesh.COMMAND_NAME])
+            self.appendContextMenu("", [command_remesh.COMMAND_NAME, command_region.COMMAND_NAME])
         if command_quality.selected_fem_mesh() is not None:
             self.appendContextMenu("", [command_quality.COMMAND_NAME])
 

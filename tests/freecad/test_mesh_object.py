@@ -106,7 +106,10 @@ class MeshObjectTest(unittest.TestCase):
         self.assertFalse(obj.NeedsRemesh)
         self.assertAlmostEqual(obj.FemMesh.BoundBox.XMax, 25.0, places=6)
         # the view resolution is an input when UseResolutionHints is on (headless: the Part
-        # preferences hold it)
+        # preferences hold it); a new object has it off
+        self.assertFalse(obj.UseResolutionHints)
+        obj.UseResolutionHints = True
+        bisectmesh.remesh(obj)
         prefs = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Part")
         old = prefs.GetFloat("MeshDeviation", 0.5)
         try:

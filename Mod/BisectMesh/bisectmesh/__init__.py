@@ -22,15 +22,36 @@ MEASURES = ("dihedral_min", "dihedral_max", "solid_angle_min", "gamma", "alpha")
 from .mesh_object import make_mesh_object, remesh  # noqa: E402,F401  (import FreeCAD only when called)
 
 
+# What builds and installs the compiled module, as the messages name it.
+SETUP_COMMAND = "./scripts/setup.sh"
+
+
 def core():
     """The compiled module ``bisectmesh._core``, with a plain message when it is missing."""
     try:
         from . import _core
     except ImportError as err:
         raise ImportError(
-            "bisectmesh._core, the compiled part of BisectMesh, cannot be loaded (%s). Build it with "
-            "CMake (target bisectmesh_core) and install the workbench again." % err) from err
+            "bisectmesh._core, the compiled part of BisectMesh, cannot be loaded (%s): build and "
+            "install it with %s in BisectMesh's source folder, then restart FreeCAD" % (err, SETUP_COMMAND)) from err
     return _core
+
+
+_core_problem = []
+
+
+def core_problem():
+    """'' when the compiled module loads, else the one line of :func:`core`'s ImportError. A
+    failure is remembered (the workbench's commands ask this often); a success costs nothing
+    once the module is loaded."""
+    if _core_problem:
+        return _core_problem[0]
+    try:
+        core()
+    except ImportError as err:
+        _core_problem.append(str(err))
+        return _core_problem[0]
+    return ""
 
 
 def mesh_shape(shape, elements=None, size=None, **options):

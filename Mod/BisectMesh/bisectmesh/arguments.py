@@ -79,6 +79,21 @@ def passes(name, value):
     return whole(name, value, 0, 100)
 
 
+def bound(name, value):
+    """A size bound in mm: a number >= 0 (0: no bound); TypeError or ValueError naming it."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError("%s must be a number, not %s (%r)" % (name, type(value).__name__, value))
+    return 0.0 if value == 0 else positive(name, value)
+
+
+def curvature_elements(value, name="curvature_elements"):
+    """Elements per full circle: 0 (no bound) or 3 to 10000."""
+    value = whole(name, value, 0, 10000)
+    if 0 < value < 3:
+        raise ValueError("%s must be 0 (no bound) or at least 3 (got %d)" % (name, value))
+    return value
+
+
 def count_or_size(elements, size):
     """(elements, size), exactly one of them set; ValueError naming both when neither or both."""
     if elements is not None:

@@ -6,12 +6,18 @@ the solids of a Part object, made by :func:`bisectmesh.shape_mesher.mesh_shape`.
 
 Like FreeCAD's Gmsh object, a document recompute never meshes: meshing is slow, and a recompute
 cannot show progress or be stopped. A recompute checks the object's inputs instead (its
-parameters, the Part's geometry and, with UseResolutionHints, the Part's view resolution): when
-they differ from those of the last meshing, the object is marked as needing a re-mesh
+parameters, its mesh regions, the Part's geometry and, with UseResolutionHints, the Part's view
+resolution): when they differ from those of the last meshing, the object is marked as needing a re-mesh
 (NeedsRemesh, MeshStatus, and a greyed icon with a warning badge in the tree). Meshing happens in
 the task panel, through the Re-mesh command (a worker thread with progress and Stop), or in a
 macro through :func:`remesh`. A property that makes no sense (a Part without a solid, a negative
 count) is reported in one line naming the object, and the mesh is marked, never a traceback.
+
+Size control: TargetElements or ElementSize, MinSize and MaxSize, CurvatureElements (elements per
+full circle) and ChordDeviation, and FreeCAD's mesh regions in MeshRegionList (mesh_regions.py).
+UseResolutionHints (off for new objects) adds the Part's view Deviation as a curvature bound.
+A view property changes no document object, so no recompute sees a new Deviation: the GUI
+watches the Part's view instead (gui/view_watch.py) and runs :func:`check_inputs` within a second.
 
 The parameters are properties (group "BisectMesh"), the results read-only properties (group
 "Results"). FreeCAD stores the FemMesh in the document itself; the proxies below keep no state
@@ -27,9 +33,10 @@ import hashlib
 import json
 import time
 
+from .preferences import DEFAULT_ELEMENTS  # noqa: F401  (the count when the preferences hold none)
+
 TYPE = "Fem::BisectMesh"
 ORDERS = ["1st", "2nd"]
-DEFAULT_ELEMENTS = 5000
 
 _PARAMETERS = "BisectMesh"
 _RESULTS = "Results"
@@ -47,15 +54,35 @@ _PARAMETER_PROPERTIES = (
      "The number of tetrahedra asked for (the thesis's R); 0: use ElementSize instead"),
     ("App::PropertyLength", "ElementSize",
      "The element size (nodal spacing), used when TargetElements is 0"),
+    ("App::PropertyLength", "MinSize",
+     "The smallest element size allowed anywhere (0: no bound); it wins over curvature and "
+     "mesh regions"),
+    ("App::PropertyLength", "MaxSize",
+     "The largest element size allowed anywhere (0: no bound)"),
+    ("App::PropertyInteger", "CurvatureElements",
+     "Curved faces and edges get at least this many elements per full circle (0: no bound, "
+     "else at least 3)"),
+    ("App::PropertyLength", "ChordDeviation",
+     "Element edges on curved faces stay within this distance of the surface (0: no bound)"),
+    ("App::PropertyLinkList", "MeshRegionList",
+     "FEM mesh regions (ObjectsFem.makeMeshRegion): a smaller element size on chosen faces, "
+     "edges, vertices or solids of the Part"),
     ("App::PropertyBool", "UseResolutionHints",
-     "Take the Part's view resolution (Deviation, AngularDeflection) for the fineness of the "
-     "curved surfaces and grade the volume mesh from it; off: FreeCAD's default resolution and "
-     "a uniform spacing"),
+     "Also take the Part's view resolution (Deviation, AngularDeflection) as a curvature bound, "
+     "the thesis's resolution hints: a finer view Deviation gives a finer mesh on curved faces. "
+     "A change of the view resolution marks the mesh as needing a re-mesh"),
     ("App::PropertyInteger", "OptimizePasses",
      "Passes of global optimisation by local transformations (0: none)"),
     ("App::PropertyInteger", "SmoothPasses",
      "Passes of guarded nodal smoothing (0: none)"),
 )
+
+# Values of the size-control properties that ask for nothing more than the version before them
+# did: such a value is left out of the inputs' fingerprint, so that a mesh saved by that version
+# is still current once the property has been added on restore.
+_NEUTRAL = {"min_size": 0.0, "max_size": 0.0, "curvature_elements": 12, "chord_deviation": 0.0, "regions": []}
+# what a property added on restore starts at (the same as the version before it meshed with)
+_RESTORED = {"CurvatureElements": 12}
 
 _RESULT_PROPERTIES = (
     ("App::PropertyInteger", "NodeCount", "Nodes of the last mesh"),
@@ -96,6 +123,8 @@ class MeshObject:
                 if name == "ElementOrder":
                     obj.ElementOrder = ORDERS
                     obj.ElementOrder = "2nd"
+                elif name in _RESTORED:
+                    setattr(obj, name, _RESTORED[name])
         for kind, name, tooltip in _RESULT_PROPERTIES:
             if name not in present:
                 obj.addProperty(kind, name, _RESULTS, tooltip, _PROP_OUTPUT)
@@ -107,19 +136,7 @@ class MeshObject:
 
     def execute(self, obj):
         """Checks the inputs; never meshes (see the module's docstring)."""
-        try:
-            key = input_key(obj)
-        except ValueError as err:
-            mark_stale(obj, str(err), error=True)
-            return
-        if not obj.MeshedInputs and obj.FemMesh.VolumeCount > 0 and obj.ResultData:
-            # saved by a version that kept no fingerprint: the mesh is taken as the inputs' own
-            obj.MeshedInputs = key
-        if key != obj.MeshedInputs:
-            mark_stale(obj, "not meshed yet" if not obj.ResultData
-                       else "the Part or a parameter changed since the last meshing")
-        else:
-            mark_current(obj)
+        check_inputs(obj)
 
     def adopt(self, obj, femmesh, result, key=None):
         """Takes a mesh made from the object's current inputs (by :func:`remesh`, or by the task
@@ -138,10 +155,32 @@ class MeshObject:
         return None
 
 
+def check_inputs(obj, reason=None):
+    """Compares ``obj``'s inputs with those of its last meshing and marks the mesh current or as
+    needing a re-mesh (what a recompute does; also run when the Part's view resolution changes,
+    which recomputes nothing). ``reason``: what MeshStatus says when they differ, if known.
+    Returns True when the mesh is current."""
+    try:
+        key = input_key(obj)
+    except ValueError as err:
+        mark_stale(obj, str(err), error=True)
+        return False
+    if not obj.MeshedInputs and obj.FemMesh.VolumeCount > 0 and obj.ResultData:
+        # saved by a version that kept no fingerprint: the mesh is taken as the inputs' own
+        obj.MeshedInputs = key
+    if key != obj.MeshedInputs:
+        mark_stale(obj, "not meshed yet" if not obj.ResultData
+                   else reason or "the Part, a mesh region or a parameter changed since the last meshing")
+        return False
+    mark_current(obj)
+    return True
+
+
 def input_key(obj):
-    """A fingerprint of everything a meshing of ``obj`` depends on: its parameters, the Part's
-    geometry (its BREP text, placement included) and, with UseResolutionHints, the Part's view
-    resolution. ValueError (one line, naming the object) when the parameters make no sense."""
+    """A fingerprint of everything a meshing of ``obj`` depends on: its parameters and mesh
+    regions, the Part's geometry (its BREP text, placement included) and, with
+    UseResolutionHints, the Part's view resolution. ValueError (one line, naming the object)
+    when the parameters make no sense."""
     from . import shape_mesher
 
     arguments = mesh_arguments(obj)
@@ -151,8 +190,10 @@ def input_key(obj):
     except ValueError as err:
         raise ValueError("%s: %s" % (obj.Label, err)) from None
     resolution = shape_mesher.view_resolution(part) if arguments["use_hints"] else None
+    # size controls at their neutral values are left out: see _NEUTRAL
+    keyed = {k: v for k, v in arguments.items() if k not in _NEUTRAL or v != _NEUTRAL[k]}
     digest = hashlib.sha1(shape_fingerprint(shape).encode())
-    digest.update(json.dumps([part.Name, arguments, resolution], sort_keys=True).encode())
+    digest.update(json.dumps([part.Name, keyed, resolution], sort_keys=True).encode())
     return digest.hexdigest()
 
 
@@ -227,8 +268,10 @@ def remesh(obj, progress=None):
 
 
 def mesh_arguments(obj):
-    """The keyword arguments of :func:`mesh_part` that ``obj``'s properties ask for; ValueError
-    for values that make no sense."""
+    """The keyword arguments of :func:`mesh_part` that ``obj``'s properties and mesh regions ask
+    for; ValueError, one line naming the object or the region, for values that make no sense."""
+    from . import mesh_regions
+
     name = obj.Label
     if obj.TargetElements < 0:
         raise ValueError("%s: TargetElements must be 0 (use ElementSize) or more" % name)
@@ -237,6 +280,20 @@ def mesh_arguments(obj):
     size = float(obj.ElementSize.Value)
     if obj.TargetElements == 0 and size <= 0:
         raise ValueError("%s: set TargetElements, or ElementSize (with TargetElements 0)" % name)
+    min_size, max_size = float(obj.MinSize.Value), float(obj.MaxSize.Value)
+    if min_size < 0 or max_size < 0 or float(obj.ChordDeviation.Value) < 0:
+        raise ValueError("%s: MinSize, MaxSize and ChordDeviation cannot be negative" % name)
+    if max_size > 0 and min_size > max_size:
+        raise ValueError("%s: MinSize (%g mm) is larger than MaxSize (%g mm)" % (name, min_size, max_size))
+    curvature = int(obj.CurvatureElements)
+    if curvature != 0 and not 3 <= curvature <= 10000:
+        raise ValueError("%s: CurvatureElements must be 0 (no bound) or 3 to 10000 (got %d)" % (name, curvature))
+    regions = []
+    if obj.Part is not None and getattr(obj.Part, "Shape", None) is not None:
+        try:
+            regions = mesh_regions.regions_of(obj)
+        except ValueError as err:
+            raise ValueError("%s: %s" % (name, err)) from None
     return {
         "elements": obj.TargetElements if obj.TargetElements > 0 else None,
         "size": None if obj.TargetElements > 0 else size,
@@ -244,6 +301,11 @@ def mesh_arguments(obj):
         "use_hints": bool(obj.UseResolutionHints),
         "optimize": int(obj.OptimizePasses),
         "smooth": int(obj.SmoothPasses),
+        "min_size": min_size,
+        "max_size": max_size,
+        "curvature_elements": curvature,
+        "chord_deviation": float(obj.ChordDeviation.Value),
+        "regions": regions,
     }
 
 
@@ -260,16 +322,20 @@ def part_shape(part):
     return shape
 
 
-def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=3, smooth=3,
-              progress=None, shape=None, resolution=None):
+def mesh_part(part, elements=None, size=None, order=2, use_hints=False, optimize=3, smooth=3,
+              progress=None, shape=None, resolution=None, min_size=0.0, max_size=0.0,
+              curvature_elements=12, chord_deviation=0.0, regions=None, threads=None):
     """Meshes the solids of ``part`` (a document object with a Shape) the way a BisectMesh object
     does; returns (Fem.FemMesh, result) with result a JSON-friendly dict of counts, stage times
     and the generator's quality summary.
 
+    min_size, max_size, curvature_elements, chord_deviation, regions
+                       the size controls of mesh_shape (0: no bound)
+    threads            generator threads; None: the preferences' (0: one per core)
     shape, resolution  already read from ``part`` (the task panel reads them in the GUI thread and
                        meshes in another); by default read here.
     """
-    from . import arguments, shape_mesher
+    from . import arguments, preferences, shape_mesher
 
     elements, size = arguments.count_or_size(elements, size)
     order = arguments.order(order)
@@ -277,6 +343,7 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=
     optimize = arguments.passes("optimize", optimize)
     smooth = arguments.passes("smooth", smooth)
     progress = arguments.optional_callable("progress", progress)
+    threads = preferences.read("Threads") if threads is None else arguments.threads(threads)
     if shape is None:
         shape = part_shape(part)
     if use_hints and resolution is None:
@@ -287,7 +354,10 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=True, optimize=
     start = time.perf_counter()
     femmesh = shape_mesher.mesh_shape(shape, elements=elements, size=size, order=order,
                                       resolution=resolution, hints=use_hints, optimize=optimize,
-                                      smooth=smooth, progress=progress, report=report)
+                                      smooth=smooth, progress=progress, report=report, threads=threads,
+                                      min_size=min_size, max_size=max_size,
+                                      curvature_elements=curvature_elements,
+                                      chord_deviation=chord_deviation, regions=list(regions or []))
     seconds = time.perf_counter() - start
     return femmesh, result_of(femmesh, report, seconds, order)
 
@@ -358,24 +428,30 @@ def is_mesh_object(obj):
     return getattr(getattr(obj, "Proxy", None), "Type", None) == TYPE
 
 
-def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints=True, optimize=3,
-                     smooth=3, name="BisectMesh", analysis=None):
+def make_mesh_object(doc, part_obj, elements=None, size=None, order=None, use_hints=False, optimize=None,
+                     smooth=None, name="BisectMesh", analysis=None, min_size=0.0, max_size=0.0,
+                     curvature_elements=None, chord_deviation=0.0):
     """A BisectMesh FEM mesh object of ``part_obj``'s solids in ``doc``, not yet meshed (marked
     NeedsRemesh): mesh it with :func:`remesh` (blocking), the Re-mesh command or the panel.
 
     elements | size   the target tetrahedron count, or the element size in mm (at most one;
-                      neither: 5000 elements)
-    order             1 (tetra4) or 2 (tetra10)
-    use_hints         grade the mesh from the Part's view resolution (UseResolutionHints)
-    optimize, smooth  optimisation and smoothing passes
+                      neither: the preferences' default, 5000 elements when unset)
+    order             1 (tetra4) or 2 (tetra10); None: the preferences' (2 when unset)
+    min_size, max_size  bounds on the element size in mm (0: none)
+    curvature_elements  elements per full circle on curved faces and edges (0: no bound);
+                      None: the preferences' (12 when unset)
+    chord_deviation   how far element edges may lie from curved surfaces, mm (0: no bound)
+    use_hints         also bound the curvature by the Part's view resolution (UseResolutionHints)
+    optimize, smooth  optimisation and smoothing passes; None: the preferences' (3 when unset)
     analysis          the FEM analysis to add it to; by default the active one in the GUI
 
+    Mesh regions: ``ObjectsFem.makeMeshRegion(doc, obj, size)`` and its References.
     Returns the ``Fem::FemMeshObjectPython``. TypeError for an argument of the wrong type,
     ValueError (naming the argument) for a value that cannot be meshed.
     """
     import FreeCAD
 
-    from . import arguments
+    from . import arguments, preferences
 
     if not isinstance(doc, FreeCAD.Document):
         raise TypeError("doc must be a FreeCAD document, not %s" % type(doc).__name__)
@@ -383,13 +459,21 @@ def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints
         raise TypeError("part_obj must be a document object with a Shape, not %s" % type(part_obj).__name__)
     if part_obj.Document is not doc:
         raise ValueError("part_obj %s is in document %s, not in %s" % (part_obj.Label, part_obj.Document.Name, doc.Name))
+    defaults = preferences.defaults()
     if elements is None and size is None:
-        elements = DEFAULT_ELEMENTS
+        elements, size = preferences.count_or_size()
     elements, size = arguments.count_or_size(elements, size)
-    order = arguments.order(order)
+    order = arguments.order(defaults["DefaultOrder"] if order is None else order)
     use_hints = arguments.flag("use_hints", use_hints)
-    optimize = arguments.passes("optimize", optimize)
-    smooth = arguments.passes("smooth", smooth)
+    optimize = arguments.passes("optimize", defaults["OptimizePasses"] if optimize is None else optimize)
+    smooth = arguments.passes("smooth", defaults["SmoothPasses"] if smooth is None else smooth)
+    curvature_elements = arguments.curvature_elements(
+        defaults["CurvatureElements"] if curvature_elements is None else curvature_elements)
+    min_size = arguments.bound("min_size", min_size)
+    max_size = arguments.bound("max_size", max_size)
+    chord_deviation = arguments.bound("chord_deviation", chord_deviation)
+    if max_size and min_size > max_size:
+        raise ValueError("min_size (%g) is larger than max_size (%g)" % (min_size, max_size))
     if not isinstance(name, str) or not name:
         raise TypeError("name must be a non-empty string, not %r" % (name,))
     if analysis is not None and not (isinstance(analysis, FreeCAD.DocumentObject)
@@ -405,6 +489,10 @@ def make_mesh_object(doc, part_obj, elements=None, size=None, order=2, use_hints
     obj.UseResolutionHints = use_hints
     obj.OptimizePasses = optimize
     obj.SmoothPasses = smooth
+    obj.MinSize = min_size
+    obj.MaxSize = max_size
+    obj.CurvatureElements = curvature_elements
+    obj.ChordDeviation = chord_deviation
     if FreeCAD.GuiUp:
         from .gui.view_provider import ViewProviderMeshObject
 

@@ -23,6 +23,45 @@ def icon_path(name):
     return ""
 
 
+_core_state = {}
+
+
+def core_missing():
+    """'' when the compiled module bisectmesh._core is there, else one line saying it is not and
+    which command builds it. Only looked for (not loaded: cheap enough for IsActive, and FreeCAD's
+    start-up loads nothing of BisectMesh's core); remembered for the session."""
+    if "missing" not in _core_state:
+        import importlib.util
+
+        import bisectmesh
+
+        try:
+            found = importlib.util.find_spec("bisectmesh._core") is not None
+        except (ImportError, ValueError):
+            found = False
+        _core_state["missing"] = "" if found else (
+            "the compiled module bisectmesh._core is missing from %s: build and install it with %s in "
+            "BisectMesh's source folder, then restart FreeCAD" % (_PACKAGE_DIR, bisectmesh.SETUP_COMMAND))
+    return _core_state["missing"]
+
+
+def report_core_problem(load=False):
+    """Prints, once per session, one line in the report view when the compiled module is missing
+    or (``load``: it is imported) cannot be loaded; returns that line, or ''."""
+    problem = core_missing()
+    if not problem and load:
+        import bisectmesh
+
+        problem = bisectmesh.core_problem()
+        _core_state["missing"] = problem  # the commands grey out too
+    if problem and not _core_state.get("reported"):
+        import FreeCAD
+
+        FreeCAD.Console.PrintError("BisectMesh: %s. Its commands stay greyed out until then.\n" % problem)
+        _core_state["reported"] = True
+    return problem
+
+
 class SelectionCommand:
     """A toolbar command that acts on the selection and, while greyed out, says in its tooltip
     what the user should select first. Subclasses set COMMAND_NAME, ICON, MENU_TEXT, TOOLTIP
@@ -41,7 +80,8 @@ class SelectionCommand:
                 "ToolTip": self.TOOLTIP + ".\n" + self.NEEDS}
 
     def IsActive(self):
-        reason = self.why_inactive()
+        missing = core_missing()
+        reason = missing[:1].upper() + missing[1:] if missing else self.why_inactive()
         self._show_tooltip(self.TOOLTIP + "." if not reason else reason + ".\n\n" + self.TOOLTIP + ".")
         return not reason
 

@@ -1,5 +1,5 @@
-"""Every BisectMesh command, registered when FreeCAD's GUI starts, and BisectMesh's place in the
-FEM workbench.
+"""Every BisectMesh command, registered when FreeCAD's GUI starts, BisectMesh's place in the
+FEM workbench, and the rest of what starts with the GUI (preferences page, view watch).
 
 InitGui.py imports this module at start-up, so the commands exist in every workbench from the
 first moment (not only once the BisectMesh workbench has been activated). The commands' modules
@@ -19,11 +19,12 @@ The FEM workbench of FreeCAD 0.20 gets:
 
 import FreeCAD
 
-from . import command_mesh, command_quality, command_remesh
+from . import command_mesh, command_quality, command_region, command_remesh
 
 # in toolbar and menu order
-COMMANDS = (command_mesh.COMMAND_NAME, command_remesh.COMMAND_NAME, command_quality.COMMAND_NAME)
-_REGISTER = (command_mesh.register, command_remesh.register, command_quality.register)
+COMMANDS = (command_mesh.COMMAND_NAME, command_remesh.COMMAND_NAME, command_region.COMMAND_NAME,
+            command_quality.COMMAND_NAME)
+_REGISTER = (command_mesh.register, command_remesh.register, command_region.register, command_quality.register)
 
 FEM_WORKBENCH = "FemWorkbench"
 TOOLBAR_NAME = "BisectMesh"
@@ -117,9 +118,28 @@ def connect_fem_menu():
 
 def set_up_at_start():
     """What InitGui.py runs after importing this module (which registered the commands): the FEM
-    toolbar and the FEM menu entries."""
-    install_fem_toolbar()
-    connect_fem_menu()
+    toolbar and the FEM menu entries, the preferences page, the watch on the Parts' view
+    resolution (view_watch.py), and one line in the report view when the compiled module is
+    missing. Each part on its own: one failing does not stop the others."""
+    from . import report_core_problem
+
+    for step in (install_fem_toolbar, connect_fem_menu, _preferences_page, _view_watch, report_core_problem):
+        try:
+            step()
+        except Exception as err:  # FreeCAD must start whatever happens here
+            FreeCAD.Console.PrintError("BisectMesh: %s failed at start-up: %s\n" % (step.__name__.strip("_"), err))
+
+
+def _preferences_page():
+    from . import preferences_page
+
+    preferences_page.register()
+
+
+def _view_watch():
+    from . import view_watch
+
+    view_watch.install()
 
 
 # Importing this module registers the commands: InitGui.py does at start-up, and FreeCAD does when

@@ -22,6 +22,11 @@ class ViewProviderMeshObject:
         stale = obj is not None and getattr(obj, "NeedsRemesh", False)
         return icon_path("BisectMesh_MeshStale.svg" if stale else "BisectMesh_Mesh.svg")
 
+    def claimChildren(self):
+        # the mesh regions show under the mesh, as under FreeCAD's Gmsh object
+        obj = getattr(self, "Object", None)
+        return list(getattr(obj, "MeshRegionList", None) or [])
+
     def setEdit(self, vobj, mode=0):
         if mode != 0:
             return None  # other edit modes (Transform, ...) stay FreeCAD's
