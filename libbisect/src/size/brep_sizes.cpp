@@ -82,9 +82,24 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
     if (!curved && face_region[f] <= 0) continue;
     for (std::size_t t = 0; t < tf.tris.size(); ++t) {
       const auto& uv = tf.uv[t];
-      for (int i = 0; i <= kSubdivide; ++i)
-        for (int j = 0; i + j <= kSubdivide; ++j) {
-          const double a = static_cast<double>(i) / kSubdivide, b = static_cast<double>(j) / kSubdivide;
+      // samples no farther apart than half the finest size the triangle asks for at its corners
+      // and centre: a cylinder's tessellation runs its whole length in one triangle (a rod 200
+      // long: four samples along it let the size grow to the spacing between them, and the
+      // middle got 8 elements per turn where 12 were asked)
+      int k = kSubdivide;
+      {
+        double finest = face_region[f] > 0 ? face_region[f] : field.base(), longest = 0;
+        const Vec2 centre = (uv[0] + uv[1] + uv[2]) / 3;
+        if (curved)
+          for (const Vec2& q : {uv[0], uv[1], uv[2], centre})
+            finest = std::min(finest, curvature_size(face.surface->max_curvature(q), o, field.base()));
+        for (int i = 0; i < 3; ++i)
+          longest = std::max(longest, (face.surface->point(uv[i]) - face.surface->point(uv[(i + 1) % 3])).norm());
+        if (finest > 0) k = static_cast<int>(std::clamp(std::ceil(2 * longest / finest), static_cast<double>(kSubdivide), 256.0));
+      }
+      for (int i = 0; i <= k; ++i)
+        for (int j = 0; i + j <= k; ++j) {
+          const double a = static_cast<double>(i) / k, b = static_cast<double>(j) / k;
           const Vec2 q = (1 - a - b) * uv[0] + a * uv[1] + b * uv[2];
           const Vec3 x = face.surface->point(q);
           if (face_region[f] > 0) add(x, face_region[f], &rep.region_sources);

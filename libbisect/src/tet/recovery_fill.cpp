@@ -9,6 +9,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "tet/face_recovery.hpp"
 
 namespace bisect::tet {
 namespace {
@@ -59,6 +60,8 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
     last = made.front();
   }
 
+  // boundary triangles that are not faces restored by local re-triangulation (face_recovery.hpp)
+  recover_faces(dt, boundary);
   // every boundary triangle a face, seen from the tetrahedron it bounds inside
   std::unordered_map<FaceKey, std::array<Index, 3>, FaceKeyHash> wanted;  // key -> triangle, rotated
   for (const auto& t : boundary) wanted[face_key(t[0], t[1], t[2])] = rotated(t);

@@ -1,8 +1,8 @@
 // A cell that no point sees whole, filled the way Delaunay meshers fill a polyhedron: its
-// boundary nodes go into a Delaunay tetrahedralization of a box around them, and when every
-// boundary triangle is a face of it (boundary recovery without Steiner points: a surface grid
-// of well-shaped triangles on a cell no thinner than them usually is), the tetrahedra inside the
-// boundary are the cell's. The interior nodes then go in with Delaunay cavities that never cross
+// boundary nodes go into a Delaunay tetrahedralization of a box around them, the boundary
+// triangles that are not faces of it are restored by local re-triangulation (face_recovery.hpp,
+// without Steiner points: the boundary is shared with the neighbouring cells), and when every
+// boundary triangle is a face, the tetrahedra inside the boundary are the cell's. The interior nodes then go in with Delaunay cavities that never cross
 // the boundary, and the min-max transformations (thesis 7.5) improve the result, as in 7.6.
 //
 // The B-rep route's fourth fill (brep_cells.hpp): after the star fill, the fill in the proxy's
@@ -20,7 +20,7 @@ namespace bisect::tet {
 // X: the cell's nodes; boundary: its surface triangles, counter-clockwise seen from outside;
 // interior: node ids strictly inside. Returns positively oriented tetrahedra whose boundary is
 // exactly `boundary` (interior nodes that fall outside or on another node are skipped, and
-// counted). Throws MeshingError when a boundary triangle is not a face of the Delaunay
+// counted). Throws MeshingError when a boundary triangle cannot be made a face of the Delaunay
 // tetrahedralization of the boundary nodes, or the inside cannot be told from the outside.
 std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
                                   const std::vector<Index>& interior, CellFillStats* stats = nullptr);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -35,7 +36,9 @@ struct Rect {
 
 // The Z-shaped polygon (0,0) (3,0) (3,2) (5,2) (5,3) (2,3) (2,1) (0,1), extruded over z in [0, 1]:
 // its kernel is empty (the edge at y = 1 wants y <= 1, the one at y = 2 wants y >= 2).
-Cell z_prism(double h) {
+// `against`: one grid square in that many takes the other diagonal (0: none), a triangle pair
+// that is not a Delaunay surface, so that the recovery has faces to restore.
+Cell z_prism(double h, int against = 0) {
   const std::vector<Rect> rects = {
       // bottom and top, as three rectangles each
       {2, 0, {0, 0}, {3, 1}, false}, {2, 0, {2, 1}, {3, 2}, false}, {2, 0, {2, 2}, {5, 3}, false},
@@ -84,13 +87,15 @@ Cell z_prism(double h) {
     for (int a = 0; a < 3; ++a)
       if (!fixed[v].count(a)) c.X[v][a] += 0.15 * h * std::sin(12.9898 * static_cast<double>(v) + 78.233 * a);
   // each square split along its Delaunay diagonal (in its plane)
-  for (const auto& q : squares) {
+  for (std::size_t k = 0; k < squares.size(); ++k) {
+    const auto& q = squares[k];
+    const bool other = against > 0 && k % static_cast<std::size_t>(against) == 0;
     const Vec3 &p0 = c.X[q[0]], &p1 = c.X[q[1]], &p2 = c.X[q[2]], &p3 = c.X[q[3]];
     // p3 inside the circle through p0, p1, p2: the diagonal p1-p3 is the Delaunay one
     const Vec3 n = (p1 - p0).cross(p2 - p0);
     const Vec3 m = p0 + (p1 - p0 + p2 - p0) / 3;
     const double cocircular = geom::insphere(p0, p1, p2, Vec3(m + n.normalized()), p3);
-    if (cocircular != 0 && (cocircular > 0) == (geom::orient3d(p0, p1, p2, Vec3(m + n.normalized())) > 0)) {
+    if (cocircular != 0 && ((cocircular > 0) == (geom::orient3d(p0, p1, p2, Vec3(m + n.normalized())) > 0)) != other) {
       c.boundary.push_back({q[0], q[1], q[3]});
       c.boundary.push_back({q[1], q[2], q[3]});
     } else {
@@ -116,11 +121,34 @@ double volume(const std::vector<Vec3>& X, const Tet& t) {
   return (X[t[1]] - X[t[0]]).dot((X[t[2]] - X[t[0]]).cross(X[t[3]] - X[t[0]])) / 6;
 }
 
+void expect_filled(const Cell& c);
+
 TEST(RecoveryFill, FillsACellThatNoPointSeesWhole) {
-  Cell c = z_prism(0.25);
+  const Cell c = z_prism(0.25);
   Index node;
   Vec3 point;
   ASSERT_FALSE(star_centre(c.X, c.boundary, c.interior, Vec3(2.5, 1.5, 0.5), &node, &point)) << "the Z prism has no kernel";
+  expect_filled(c);
+}
+
+// One grid square in seven split along its other diagonal: those 138 triangles are not
+// Delaunay faces. The local re-triangulation (face_recovery.hpp) restores most of them, not all:
+// a square whose two diagonal ends see neither the whole ring of tetrahedra around the other
+// diagonal keeps it (measured: 26 left; the fill then refuses the cell, naming how many).
+TEST(RecoveryFill, RestoresMostBoundaryTrianglesThatAreNotDelaunay) {
+  const Cell c = z_prism(0.25, 7);
+  try {
+    expect_filled(c);
+  } catch (const MeshingError& e) {
+    const std::string what = e.what();
+    const std::size_t at = what.find("boundary recovery: ");
+    ASSERT_NE(at, std::string::npos) << what;
+    const long left = std::stol(what.substr(at + 19));
+    EXPECT_LT(left, 138 / 4) << what;
+  }
+}
+
+void expect_filled(const Cell& c) {
   CellFillStats st;
   const std::vector<Tet> tets = fill_by_recovery(c.X, c.boundary, c.interior, &st);
   double v = 0;
