@@ -39,6 +39,18 @@ double signed_area(const std::array<Vec2, 3>& q) {
 
 BrepInput input_of(const TopoDS_Shape& shape, const std::string& name) { return occ::brep_input_from_shape(shape, name); }
 
+double corner_volume(const TetMesh& m, std::size_t t) {
+  const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
+             &d = m.nodes[m.tet_node(t, 3)];
+  return (b - a).dot((c - a).cross(d - a)) / 6;
+}
+
+double corner_volume(const TetMesh& m) {
+  double v = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) v += corner_volume(m, t);
+  return v;
+}
+
 double size_of(const BrepInput& in) { return (in.bbox_max - in.bbox_min).norm(); }
 
 double check_wires(const BrepInput& in) {

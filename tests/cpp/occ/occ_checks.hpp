@@ -8,11 +8,16 @@
 
 #include "bisect/brep_input.hpp"
 #include "bisect/occ_checker.hpp"
+#include "bisect/tet_mesh.hpp"
 
 namespace bisect::test {
 
 // The adapter's BrepInput of a shape built in a test.
 BrepInput input_of(const TopoDS_Shape& shape, const std::string& name = "test shape");
+
+// The volume of tetrahedron t of a mesh, from its corners (straight-sided), and of the whole mesh.
+double corner_volume(const TetMesh& m, std::size_t t);
+double corner_volume(const TetMesh& m);
 
 // A length against which round-off is measured: the bounding box's diagonal.
 double size_of(const BrepInput& in);

@@ -19,12 +19,6 @@
 namespace bisect {
 namespace {
 
-double tet_volume(const TetMesh& m, std::size_t t) {
-  const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
-             &d = m.nodes[m.tet_node(t, 3)];
-  return (b - a).dot((c - a).cross(d - a)) / 6;
-}
-
 TEST(BrepCompound, SeparateBodiesAreMeshedEachOnItsOwn) {
   // through a BREP string, as FreeCAD hands a shape over (shape.exportBrepToString()); the shape
   // as built in memory fills the cylinder differently (not understood; FreeCAD never passes one)
@@ -56,7 +50,7 @@ TEST(BrepCompound, SeparateBodiesAreMeshedEachOnItsOwn) {
     for (std::size_t t = 0; t < m.num_tets(); ++t) {
       ASSERT_GE(m.region[t], 0);
       ASSERT_LT(m.region[t], 3);
-      volume[m.region[t]] += tet_volume(m, t);
+      volume[m.region[t]] += test::corner_volume(m, t);
       for (int k = 0; k < m.nodes_per_tet(); ++k) {
         int& b = body[m.tet_node(t, k)];
         if (b >= 0 && b != m.region[t]) shared = true;

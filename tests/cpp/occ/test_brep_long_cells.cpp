@@ -16,6 +16,7 @@
 #include "bisect/occ.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "occ_checks.hpp"
 
 namespace bisect {
 namespace {
@@ -24,16 +25,6 @@ BrepInput rod() {
   std::ostringstream brep;
   BRepTools::Write(BRepPrimAPI_MakeCylinder(5, 200).Shape(), brep);
   return load_brep_string(brep.str(), "rod");
-}
-
-double volume(const TetMesh& m) {
-  double v = 0;
-  for (std::size_t t = 0; t < m.num_tets(); ++t) {
-    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
-               &d = m.nodes[m.tet_node(t, 3)];
-    v += (b - a).dot((c - a).cross(d - a)) / 6;
-  }
-  return v;
 }
 
 TEST(BrepLongCells, ARodIsFilledByBoundaryRecovery) {
@@ -54,7 +45,7 @@ TEST(BrepLongCells, ARodIsFilledByBoundaryRecovery) {
   EXPECT_GE(q.dihedral_min.min, 5.0) << R;
   // within the chords' error: at 12 or more segments per turn the section is at least the
   // inscribed 12-gon's, 4.5% under the circle's
-  const double v = volume(m), want = 5000 * M_PI;
+  const double v = test::corner_volume(m), want = 5000 * M_PI;
   EXPECT_LE(v, want * (1 + 1e-9));
   EXPECT_GE(v, want * 12 / (2 * M_PI) * std::sin(2 * M_PI / 12)) << R;
   }

@@ -22,20 +22,11 @@
 #include "bisect/occ_checker.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "occ_checks.hpp"
 #include "shared_breps.hpp"
 
 namespace bisect {
 namespace {
-
-double tet_volume(const TetMesh& m) {
-  double v = 0;
-  for (std::size_t t = 0; t < m.num_tets(); ++t) {
-    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],
-               &d = m.nodes[m.tet_node(t, 3)];
-    v += (b - a).dot((c - a).cross(d - a)) / 6;
-  }
-  return v;
-}
 
 // The models of the route's done-when: every shared B-rep but the corpus (tested on its own).
 std::vector<std::string> route_models() {
@@ -116,7 +107,7 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
   const bool known = model == "models/cad/Angled.step" && R <= 10000;
   if (!known) EXPECT_LE(worst, 1.0) << model << ": a boundary node lies " << worst << " tolerances off its face";
   EXPECT_LE(mids_off, static_cast<std::size_t>(st.straightened_edges)) << model << " of " << mids_checked << " mid-nodes";
-  const double volume = tet_volume(m), want = check.volume();
+  const double volume = test::corner_volume(m), want = check.volume();
   EXPECT_NEAR(volume, want, 1.5 * chordal + 1e-9 * want) << model;
 
   const QualitySummary q = summarize_quality(element_quality(m));
