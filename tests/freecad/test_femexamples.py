@@ -41,9 +41,9 @@ Solved but not compared (see SOLVE_ONLY):
     constraint_transform_beam_hinged: singular (the beam may slide along its pins), the largest
     displacement holds an arbitrary rigid drift and varies between runs of the same mesh
 
-Known BisectMesh failures, marked expectedFailure (see KNOWN_MESHER_FAILURES):
-    constraint_transform_torque: MeshingError at the shipped count (constraint_contact_solid_solid
-    meshes since cells that no point sees whole are filled by Delaunay boundary recovery)
+Known BisectMesh failures, marked expectedFailure (see KNOWN_MESHER_FAILURES): none since cells
+that no point sees whole are filled by Delaunay boundary recovery (constraint_contact_solid_solid
+and constraint_transform_torque failed with a MeshingError at the shipped count before).
 
 Left out, with the reason (see LEFT_OUT): the shell, beam and 2D examples, the frequency and
 buckling analyses, the Elmer-only examples, constraint_centrif (its fixed faces hold only one of
@@ -90,16 +90,9 @@ EXAMPLES = {
     "thermomech_spine": "thermomechanical box with heat flux (12 tetra10 shipped); tetra10",
 }
 
-# Examples where BisectMesh itself fails (measured on branch brep-fixes): the test is marked
-# expectedFailure, so that it turns into an unexpected success (a failing run) once fixed.
-KNOWN_MESHER_FAILURES = {
-    "constraint_transform_torque": (
-        "mesh_shape(elements=2869, order=2) raises MeshingError: convex cell 8 of Solid1 (joined with "
-        "4 neighbours): no point sees its whole boundary, even joined with its neighbours, and its "
-        "proxy's filling cannot be untangled (the cell is narrower than the curved face's bulge next "
-        "to it). A tube of radii 5 and 4 mm, 50 mm long; same at 250 to 8000 tetrahedra, order 1 or 2; "
-        "meshes with hints=True or curvature_elements=48"),
-}
+# Examples where BisectMesh itself fails: the test is marked expectedFailure, so that it turns
+# into an unexpected success (a failing run) once fixed. None at present.
+KNOWN_MESHER_FAILURES = {}
 
 # Examples solved (BisectMesh's mesh must solve) whose largest displacement is not compared, with
 # the reason.
