@@ -4,6 +4,7 @@
 // optimisation, the mesh assembly and, for order 2, the curved mid-nodes.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <string>
 #include <unordered_set>
@@ -209,11 +210,21 @@ TetMesh generate_connected(const BrepInput& in, const GenerateOptions& opt, Gene
   }
   if (progress && !progress(1.0)) throw Cancelled();
   if (opt.sizing.size <= 0 && static_cast<double>(out.num_tets()) > 1.2 * want) {
-    // more than R asked: the curvature bound or the smallest B-rep edges set the floor
+    // more than R asked: the smallest B-rep edges or the curvature bound set the floor (sizes
+    // printed to 3 digits, at least the size field's own floor)
     st.count_floor = static_cast<std::int64_t>(out.num_tets());
-    st.count_floor_reason = sizes.smallest_edge > 0 && (sizes.smallest_curvature_size <= 0 || sizes.smallest_edge < sizes.smallest_curvature_size)
-                                ? "features: B-rep edges down to " + std::to_string(sizes.smallest_edge)
-                                : "curvature: elements down to " + std::to_string(sizes.smallest_curvature_size) + " on curved faces";
+    auto length = [](double x) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", x);
+      return std::string(text);
+    };
+    if (sizes.smallest_edge > 0 && (sizes.smallest_curvature_size <= 0 || sizes.smallest_edge < sizes.smallest_curvature_size))
+      st.count_floor_reason = "features: B-rep edges down to " + length(sizes.smallest_edge);
+    else if (sizes.smallest_curvature_size > 0)
+      st.count_floor_reason = "curvature: elements down to " + length(sizes.smallest_curvature_size) + " on curved faces";
+    else  // neither bound asked for smaller elements: the count search itself came no nearer
+      st.count_floor_reason = "calibration: the count search ended " +
+                              std::to_string(std::lround(100 * (static_cast<double>(out.num_tets()) / want - 1))) + "% above R";
   }
   st.nodes = static_cast<std::int64_t>(out.nodes.size());
   st.tets = static_cast<std::int64_t>(out.num_tets());

@@ -57,7 +57,8 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
   // thousandth of the shape's diagonal keeps the finest element to a size a FEM model can use
   // (min_size, when given and larger, rules).
   const double diag = (in.bbox_max - in.bbox_min).norm();
-  SizeField field(base, o.size_grading, std::max(o.min_size, std::min(1e-3 * diag, 0.5 * base)), o.max_size);
+  const double floor = std::max(o.min_size, std::min(1e-3 * diag, 0.5 * base));
+  SizeField field(base, o.size_grading, floor, o.max_size);
   auto add = [&](const Vec3& p, double s, std::size_t* counter) {
     if (s < field.base()) {
       field.add(p, s);
@@ -107,7 +108,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
           const double s = curvature_size(face.surface->max_curvature(q), o, field.base());
           if (s < field.base()) {
             add(x, s, &rep.curvature_sources);
-            rep.smallest_curvature_size = rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s;
+            rep.smallest_curvature_size = std::max(floor, rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s);
           }
         }
     }
@@ -142,7 +143,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
       const double s = curvature_size(c.curvature(t), o, field.base());
       if (s < field.base()) {
         add(x, s, &rep.curvature_sources);
-        rep.smallest_curvature_size = rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s;
+        rep.smallest_curvature_size = std::max(floor, rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s);
       }
     }
   }
