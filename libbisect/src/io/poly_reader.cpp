@@ -19,6 +19,7 @@
 #include "bisect/io.hpp"
 #include "io/file_paths.hpp"
 #include "io/face_checks.hpp"
+#include "io/polygon_checks.hpp"
 #include "io/text_scan.hpp"
 
 namespace bisect {
@@ -334,15 +335,20 @@ Poly2Input read_poly2(std::istream& stream, const std::string& name) {
     naming.face = "polygon", naming.faces = "polygons";
     io::check_distinct_nodes(p.nodes, Index(i - 1), io::where(name, s.line()), naming);
     double twice_area = 0, diameter = 0;
+    Vec2 lo = in.nodes[p.nodes[0]], hi = lo;
     for (std::size_t a = 0; a < p.nodes.size(); ++a) {
       const Vec2 u = in.nodes[p.nodes[a]] - in.nodes[p.nodes[0]];  // local, for less cancellation
       const Vec2 v = in.nodes[p.nodes[(a + 1) % p.nodes.size()]] - in.nodes[p.nodes[0]];
       twice_area += u.x() * v.y() - v.x() * u.y();
-      for (std::size_t b = a + 1; b < p.nodes.size(); ++b)
-        diameter = std::max(diameter, (in.nodes[p.nodes[b]] - in.nodes[p.nodes[a]]).norm());
+      lo = lo.cwiseMin(in.nodes[p.nodes[a]]), hi = hi.cwiseMax(in.nodes[p.nodes[a]]);
+      if (p.nodes.size() <= 256)  // beyond, the box's diagonal (the pairwise scan is quadratic)
+        for (std::size_t b = a + 1; b < p.nodes.size(); ++b)
+          diameter = std::max(diameter, (in.nodes[p.nodes[b]] - in.nodes[p.nodes[a]]).norm());
     }
+    if (p.nodes.size() > 256) diameter = (hi - lo).norm();
     if (!(std::abs(twice_area) > io::kZeroAreaRelTol * diameter * diameter))
       s.fail(polygon + " has zero area (its nodes are collinear or coincide, or it folds onto itself)");
+    io::check_simple_polygon(in.nodes, p.nodes, Index(i - 1), io::where(name, s.line()));
     in.polygons.push_back(std::move(p));
     line_of.push_back(s.line());
   }

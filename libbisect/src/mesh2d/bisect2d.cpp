@@ -212,14 +212,20 @@ bool grow_from_edge(const std::vector<Vec2>& X, const Work& w, std::vector<std::
 
 void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>& loop, const std::vector<Index>& inside,
                            std::vector<std::array<Index, 3>>& tris) {
+  // a failure is placed at the middle of the piece's boundary nodes
+  auto centre = [&](const Work& w) {
+    Vec2 c = Vec2::Zero();
+    for (Index v : w.loop) c += X[v];
+    return Vec2(c / static_cast<double>(std::max<std::size_t>(w.loop.size(), 1)));
+  };
   std::vector<Work> stack{{loop, inside}};
   while (!stack.empty()) {
     Work w = std::move(stack.back());
     stack.pop_back();
     const std::size_t n = w.loop.size();
-    if (n < 3) throw MeshingError("recursive bisection: a region with fewer than three boundary nodes");
+    if (n < 3) throw PlanarFailure("recursive bisection: a piece with fewer than three boundary nodes", centre(w));
     if (n == 3 && w.inside.empty()) {
-      if (orient2d(X[w.loop[0]], X[w.loop[1]], X[w.loop[2]]) <= 0) throw MeshingError("recursive bisection: a flat triangle");
+      if (orient2d(X[w.loop[0]], X[w.loop[1]], X[w.loop[2]]) <= 0) throw PlanarFailure("recursive bisection: a flat triangle", centre(w));
       tris.push_back({w.loop[0], w.loop[1], w.loop[2]});
       continue;
     }
@@ -227,7 +233,7 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
       if (split_triangle(X, w, tris)) {
         stack.push_back(std::move(w));
       } else if (!grow_from_edge(X, w, tris, stack)) {
-        throw MeshingError("recursive bisection: a triangle with nodes inside cannot be split");
+        throw PlanarFailure("recursive bisection: a triangle with nodes inside cannot be split", centre(w));
       }
       continue;
     }
@@ -319,11 +325,9 @@ void bisection_triangulate(const std::vector<Vec2>& X, const std::vector<Index>&
     if (remove_vertex(X, w, tris)) {
       stack.push_back(std::move(w));
     } else if (!grow_from_edge(X, w, tris, stack)) {
-      Vec2 centre = Vec2::Zero();
-      for (Index v : w.loop) centre += X[v];
       throw PlanarFailure("recursive bisection: a piece of " + std::to_string(w.loop.size()) +
                               " nodes with no split and no removable vertex",
-                          centre / static_cast<double>(std::max<std::size_t>(w.loop.size(), 1)));
+                          centre(w));
     }
   }
 }

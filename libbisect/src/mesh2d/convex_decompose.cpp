@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
@@ -91,6 +92,185 @@ double area2(const std::vector<Vec2>& X, const std::vector<Index>& l) {
     s += u.x() * v.y() - u.y() * v.x();
   }
   return s;
+}
+
+// ---- holes that touch their piece (a notch: a hole or a sub-domain sharing a node or a side) ----
+
+bool shares_node(const std::vector<Index>& a, const std::vector<Index>& b) {
+  std::vector<Index> s = a;
+  std::sort(s.begin(), s.end());
+  for (Index v : b)
+    if (std::binary_search(s.begin(), s.end(), v)) return true;
+  return false;
+}
+
+// Whether the hole lies in the piece it touches: the midpoint of a hole side that is not also a
+// side of the piece lies inside (a node both touch can belong to two pieces after a cut).
+bool holds(const std::vector<Vec2>& X, const std::vector<Index>& piece, const std::vector<Index>& hole) {
+  std::vector<std::pair<Index, Index>> sides;
+  for (std::size_t k = 0; k < piece.size(); ++k) sides.push_back({piece[k], piece[(k + 1) % piece.size()]});
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t k = 0; k < hole.size(); ++k) {
+    const Index u = hole[k], v = hole[(k + 1) % hole.size()];
+    if (std::binary_search(sides.begin(), sides.end(), std::make_pair(v, u))) continue;
+    return inside_loop(X, piece, 0.5 * (X[u] + X[v]));
+  }
+  return true;  // every side shared: the hole fills the piece
+}
+
+// The closed walks around the piece less the hole: the two loops' sides, those running both
+// ways (the sides the hole shares with the piece) taken out, followed with the region on the
+// left; where several sides leave a node, the first clockwise from the way back, so walks part
+// where the region is pinched apart and run on where a hole touches it at a node.
+std::vector<std::vector<Index>> boundary_walks(const std::vector<Vec2>& X, const std::vector<Index>& piece,
+                                               const std::vector<Index>& hole, bool* closed) {
+  std::vector<std::pair<Index, Index>> e;
+  for (const auto* l : {&piece, &hole})
+    for (std::size_t k = 0; k < l->size(); ++k) e.push_back({(*l)[k], (*l)[(k + 1) % l->size()]});
+  std::vector<char> live(e.size(), 1);
+  std::map<std::pair<Index, Index>, std::vector<std::size_t>> by_ends;
+  for (std::size_t k = 0; k < e.size(); ++k) by_ends[e[k]].push_back(k);
+  for (std::size_t k = 0; k < e.size(); ++k) {
+    if (!live[k]) continue;
+    const auto it = by_ends.find({e[k].second, e[k].first});
+    if (it == by_ends.end()) continue;
+    for (std::size_t j : it->second)
+      if (live[j]) {
+        live[j] = live[k] = 0;
+        break;
+      }
+  }
+  std::map<Index, std::vector<std::size_t>> leaving;
+  for (std::size_t k = 0; k < e.size(); ++k)
+    if (live[k]) leaving[e[k].first].push_back(k);
+  std::vector<std::vector<Index>> walks;
+  *closed = true;
+  for (std::size_t s = 0; s < e.size(); ++s) {
+    if (!live[s]) continue;
+    std::vector<Index> walk;
+    std::size_t k = s;
+    for (;;) {
+      live[k] = 0;
+      walk.push_back(e[k].first);
+      const Index u = e[k].first, v = e[k].second;
+      std::size_t next = e.size();
+      double best = 1e300;
+      std::vector<std::size_t> cands = leaving[v];
+      if (e[s].first == v) cands.push_back(s);  // back at the start: closing is one of the ways on
+      for (std::size_t f : cands) {
+        if (f != s && !live[f]) continue;
+        double a = angle_between(X[e[f].second] - X[v], X[u] - X[v]);  // clockwise from the way back
+        if (a <= 0) a = 2 * M_PI;
+        if (a < best) best = a, next = f;
+      }
+      if (next == s) break;
+      if (next == e.size()) {  // a side with no way on: the loops do not bound a region
+        *closed = false;
+        break;
+      }
+      k = next;
+    }
+    walks.push_back(std::move(walk));
+  }
+  return walks;
+}
+
+// A separator from walk position pa to position pb: distinct nodes, leaving each into the walk's
+// angle there, crossing nothing; when strict, no sliver angle and no node grazed.
+bool separator_ok(const std::vector<Vec2>& X, const std::vector<Index>& w, const std::vector<std::vector<Index>>& all, std::size_t pa,
+                  std::size_t pb, double h, bool strict) {
+  const std::size_t n = w.size();
+  const Index a = w[pa], b = w[pb];
+  if (a == b || X[a] == X[b]) return false;
+  if (!in_angle(X[w[(pa + n - 1) % n]], X[a], X[w[(pa + 1) % n]], X[b])) return false;
+  if (!in_angle(X[w[(pb + n - 1) % n]], X[b], X[w[(pb + 1) % n]], X[a])) return false;
+  if (!clear(X, all, a, b)) return false;
+  if (!strict) return true;
+  const auto [a1, a2] = split_angles(X, w, pa, X[b]);
+  const auto [b1, b2] = split_angles(X, w, pb, X[a]);
+  return std::min({a1, a2, b1, b2}) >= kMinSeparatorAngle && !passes_near(X, all, a, b, h / 4);
+}
+
+// A walk that passes a node twice (a hole touching the piece at that node) cut into walks that
+// pass no node twice: each time one separator between the part of the walk from the node back
+// to it (round the hole) and the rest, the shortest acceptable one. False when none is found;
+// *at then holds the node.
+bool cut_pinches(std::vector<Vec2>& X, std::vector<Index> walk, const std::vector<std::vector<Index>>& others, double h,
+                 std::vector<std::vector<Index>>* out, Index* at) {
+  std::vector<std::vector<Index>> todo{std::move(walk)};
+  while (!todo.empty()) {
+    std::vector<Index> w = std::move(todo.back());
+    todo.pop_back();
+    const std::size_t n = w.size();
+    std::map<Index, std::size_t> first;
+    std::size_t i = n, j = n;
+    for (std::size_t k = 0; k < n && j == n; ++k) {
+      const auto [it, fresh] = first.emplace(w[k], k);
+      if (!fresh) i = it->second, j = k;
+    }
+    if (j == n) {
+      out->push_back(std::move(w));
+      continue;
+    }
+    *at = w[i];
+    std::vector<std::vector<Index>> all = others;
+    all.push_back(w);
+    std::size_t pa = n, pb = n;
+    for (const bool strict : {true, false}) {
+      double best = 1e300;
+      for (std::size_t p = i + 1; p < j; ++p) {
+        if (w[p] == w[i]) continue;
+        std::vector<std::pair<double, std::size_t>> order;  // the rest of the walk, nearest first
+        for (std::size_t q = (j + 1) % n; q != i; q = (q + 1) % n) order.push_back({(X[w[q]] - X[w[p]]).squaredNorm(), q});
+        std::sort(order.begin(), order.end());
+        for (std::size_t c = 0; c < std::min<std::size_t>(order.size(), 12); ++c)
+          if (order[c].first < best && separator_ok(X, w, all, p, order[c].second, h, strict)) {
+            best = order[c].first, pa = p, pb = order[c].second;
+            break;
+          }
+      }
+      if (pa != n) break;
+    }
+    if (pa == n) return false;
+    const std::vector<Index> mid = separator_nodes(X, w[pb], w[pa], h);  // from pb towards pa
+    std::vector<Index> one, two;
+    for (std::size_t k = pa; k != pb; k = (k + 1) % n) one.push_back(w[k]);
+    one.push_back(w[pb]);
+    one.insert(one.end(), mid.begin(), mid.end());
+    for (std::size_t k = pb; k != pa; k = (k + 1) % n) two.push_back(w[k]);
+    two.push_back(w[pa]);
+    two.insert(two.end(), mid.rbegin(), mid.rend());
+    todo.push_back(std::move(one));
+    todo.push_back(std::move(two));
+  }
+  return true;
+}
+
+// The piece less a hole that touches it, as simple counter-clockwise loops (none when the hole
+// fills it). Throws PlanarFailure at the touching node when it cannot be done.
+std::vector<std::vector<Index>> join_touching(std::vector<Vec2>& X, const std::vector<Index>& piece, const std::vector<Index>& hole,
+                                              const std::vector<std::vector<Index>>& others, double h, int hole_index) {
+  Index touch = hole[0];
+  for (Index v : hole)
+    if (std::find(piece.begin(), piece.end(), v) != piece.end()) {
+      touch = v;
+      break;
+    }
+  bool closed = true;
+  const std::vector<std::vector<Index>> walks = boundary_walks(X, piece, hole, &closed);
+  if (!closed)
+    throw PlanarFailure("convex decomposition: a hole that touches its boundary leaves a side with no way on", X[touch], hole_index);
+  std::vector<std::vector<Index>> out;
+  for (const auto& w : walks) {
+    if (w.size() < 3) continue;
+    if (area2(X, w) <= 0)
+      throw PlanarFailure("convex decomposition: a hole that touches its boundary is not inside it", X[touch], hole_index);
+    Index at = touch;
+    if (!cut_pinches(X, w, others, h, &out, &at))
+      throw PlanarFailure("convex decomposition: no cut edge joins a hole that touches its boundary at one node to the rest", X[at],
+                          hole_index);
+  }
+  return out;
 }
 
 // Splits `outer` with the hole `hole` inside it into two simple pieces by two separators. When
@@ -195,15 +375,30 @@ std::size_t best_separator(const std::vector<Vec2>& X, const std::vector<Index>&
 }  // namespace
 
 std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::vector<std::vector<Index>>& loops, double h) {
-  // 1. holes: each splits the simple piece holding it in two
+  // 1. holes: each splits the simple piece holding it in two; a hole that touches a piece (shares
+  // a node or a side with it: a notch) joins that piece's boundary instead, and goes first
   std::vector<std::vector<Index>> simple{loops[0]};
-  for (std::size_t hi = 1; hi < loops.size(); ++hi) {
+  std::vector<std::size_t> left;  // holes not yet joined, in order
+  for (std::size_t hi = 1; hi < loops.size(); ++hi) left.push_back(hi);
+  while (!left.empty()) {
+    std::size_t pick = 0, host = simple.size();
+    for (std::size_t k = 0; k < left.size() && host == simple.size(); ++k)
+      for (std::size_t s = 0; s < simple.size() && host == simple.size(); ++s)
+        if (shares_node(simple[s], loops[left[k]]) && holds(X, simple[s], loops[left[k]])) pick = k, host = s;
+    const std::size_t hi = left[pick];
+    left.erase(left.begin() + static_cast<std::ptrdiff_t>(pick));
     const std::vector<Index>& hole = loops[hi];
-    std::size_t host = simple.size();
+    std::vector<std::vector<Index>> others;
+    for (std::size_t k : left) others.push_back(loops[k]);
+    if (host < simple.size()) {
+      std::vector<std::vector<Index>> parts = join_touching(X, simple[host], hole, others, h, static_cast<int>(hi));
+      simple.erase(simple.begin() + static_cast<std::ptrdiff_t>(host));
+      for (auto& p : parts) simple.push_back(std::move(p));
+      continue;
+    }
     for (std::size_t s = 0; s < simple.size() && host == simple.size(); ++s)
       if (inside_loop(X, simple[s], X[hole[0]])) host = s;
     if (host == simple.size()) throw PlanarFailure("convex decomposition: a hole lies in no piece", X[hole[0]], static_cast<int>(hi));
-    std::vector<std::vector<Index>> others(loops.begin() + static_cast<std::ptrdiff_t>(hi) + 1, loops.end());
     std::vector<Index> a, b;
     if (!cut_hole(X, simple[host], hole, others, h, true, &a, &b) && !cut_hole(X, simple[host], hole, others, h, false, &a, &b))
       throw PlanarFailure("convex decomposition: no pair of cut edges joins a hole to its boundary", X[hole[0]], static_cast<int>(hi));

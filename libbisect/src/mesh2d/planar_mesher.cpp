@@ -22,23 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// A step's failure in region r, worded with the input's polygon numbers and coordinates (the
-// domain was moved by -shift).
-MeshingError placed(const Poly2Input& in, const PlanarDomain& d, std::size_t r, const PlanarFailure& e, const Vec2& shift) {
-  const PlanarRegion& reg = d.regions[r];
-  std::ostringstream msg;
-  msg.precision(9);
-  msg << in.source << ": polygon " << reg.polygon + 1;
-  if (e.loop > 0 && static_cast<std::size_t>(e.loop) < reg.loop_polygon.size())
-    msg << " around polygon " << reg.loop_polygon[e.loop] + 1 << (in.polygons[reg.loop_polygon[e.loop]].hole ? " (a hole)" : " (a sub-domain)");
-  const Vec2 at = e.where + shift;
-  // nine digits of the part's own size, however far from the origin it lies
-  const double scale = std::sqrt(std::max(d.area, 1e-300)), far = at.lpNorm<Eigen::Infinity>();
-  msg.precision(9 + static_cast<int>(std::clamp(std::ceil(std::log10(std::max(far / scale, 1.0))), 0.0, 8.0)));
-  msg << ": " << e.what() << ", near (" << at.x() << ", " << at.y() << ")";
-  return MeshingError(msg.str());
-}
-
 // One meshing at spacing h: the boundary grid, then each region filled.
 TriMesh2 mesh_once(const Poly2Input& in, const PlanarDomain& d, double h, double element_area, PlanarStats& st, const Vec2& shift) {
   const auto t0 = Clock::now();
@@ -53,7 +36,7 @@ TriMesh2 mesh_once(const Poly2Input& in, const PlanarDomain& d, double h, double
     try {
       st.convex_pieces += fill_region(m, g.loops[r], h, element_area, static_cast<Index>(r), &times);
     } catch (const PlanarFailure& e) {
-      throw placed(in, d, r, e, shift);
+      throw placed_failure(in, r, e, shift);
     }
   }
   m.fixed.assign(m.nodes.size(), 0);
@@ -99,6 +82,22 @@ TriMesh2 mesh_near_origin(const Poly2Input& in, const PlanarOptions& opt, Planar
 }
 
 }  // namespace
+
+MeshingError placed_failure(const Poly2Input& in, std::size_t r, const PlanarFailure& e, const Vec2& shift) {
+  const PlanarDomain d = prepare_planar(in);
+  const PlanarRegion& reg = d.regions.at(r);
+  std::ostringstream msg;
+  msg.precision(9);
+  msg << in.source << ": polygon " << reg.polygon + 1;
+  if (e.loop > 0 && static_cast<std::size_t>(e.loop) < reg.loop_polygon.size())
+    msg << " around polygon " << reg.loop_polygon[e.loop] + 1 << (in.polygons[reg.loop_polygon[e.loop]].hole ? " (a hole)" : " (a sub-domain)");
+  const Vec2 at = e.where + shift;
+  // nine digits of the part's own size, however far from the origin it lies
+  const double scale = std::sqrt(std::max(d.area, 1e-300)), far = at.lpNorm<Eigen::Infinity>();
+  msg.precision(9 + static_cast<int>(std::clamp(std::ceil(std::log10(std::max(far / scale, 1.0))), 0.0, 8.0)));
+  msg << ": " << e.what() << ", near (" << at.x() << ", " << at.y() << ")";
+  return MeshingError(msg.str());
+}
 
 TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats) {
   const Vec2 shift = geom::recentring_shift(in.nodes);  // a part far from the origin: near it

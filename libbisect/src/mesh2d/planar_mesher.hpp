@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 
+#include "bisect/errors.hpp"
 #include "bisect/poly_input.hpp"
 #include "mesh2d/tri_mesh2.hpp"
 
@@ -29,6 +30,12 @@ struct PlanarStats {
 };
 
 TriMesh2 mesh_planar(const Poly2Input& in, const PlanarOptions& opt, PlanarStats* stats = nullptr);
+
+struct PlanarFailure;
+// A step's failure in region `region` of the input, worded with the file, the input's polygon
+// numbers and a point in its own coordinates (the steps ran on a copy moved by -shift): "FILE:
+// polygon P[ around polygon Q (a hole)]: WHAT, near (x, y)". What mesh_planar throws.
+MeshingError placed_failure(const Poly2Input& in, std::size_t region, const PlanarFailure& e, const Vec2& shift);
 
 // VTK XML unstructured grid (z = 0): triangles and quadrilaterals, the region as cell data.
 void write_tri_vtu(const TriMesh2& m, const std::string& path);
