@@ -206,33 +206,37 @@ bool recover_triangle(TetComplex& dt, const std::array<Index, 3>& tri) {
 }  // namespace
 
 std::size_t recover_faces(TetComplex& dt, const std::vector<std::array<Index, 3>>& wanted) {
-  auto count_missing = [&](const Present& p) {
-    std::size_t n = 0;
-    for (const auto& t : wanted) n += !p.faces.count(face_key(t[0], t[1], t[2]));
-    return n;
-  };
   Present p = present(dt);
-  std::size_t missing = count_missing(p);
-  // each change restores an edge or a triangle, or makes way for one: a bound on them all
-  const std::size_t limit = 4 * missing + 8;
-  for (std::size_t changes = 0; missing > 0 && changes < limit; ++changes) {
+  std::vector<std::array<Index, 3>> missing;
+  for (const auto& t : wanted)
+    if (!p.faces.count(face_key(t[0], t[1], t[2]))) missing.push_back(t);
+  // Rounds over the missing triangles, each change made at once (and what is present read
+  // again), until a round changes nothing: a change can make way for a triangle that failed
+  // earlier in the round, and the next round tries it again. Each attempt scans the complex, so
+  // the rounds are bounded too.
+  for (int round = 0; round < 8 && !missing.empty(); ++round) {
     bool changed = false;
-    for (const auto& t : wanted) {
-      if (p.faces.count(face_key(t[0], t[1], t[2]))) continue;
-      bool edges = true;
-      for (int i = 0; i < 3 && !changed; ++i)
+    std::vector<std::array<Index, 3>> left;
+    for (const auto& t : missing) {
+      if (p.faces.count(face_key(t[0], t[1], t[2]))) continue;  // restored by an earlier change
+      bool done = false, edges = true;
+      for (int i = 0; i < 3; ++i)
         if (!p.edges.count(edge_of(t[i], t[(i + 1) % 3]))) {
           edges = false;
-          changed = recover_edge(dt, t[i], t[(i + 1) % 3]);
+          if (recover_edge(dt, t[i], t[(i + 1) % 3])) done = true;
+          break;  // one edge at a time: the next round sees the others
         }
-      if (!changed && edges) changed = recover_triangle(dt, t);
-      if (changed) break;  // the complex changed: look again
+      if (edges) done = recover_triangle(dt, t);
+      if (done) {
+        changed = true;
+        p = present(dt);
+      }
+      if (!p.faces.count(face_key(t[0], t[1], t[2]))) left.push_back(t);
     }
+    missing = std::move(left);
     if (!changed) break;
-    p = present(dt);
-    missing = count_missing(p);
   }
-  return missing;
+  return missing.size();
 }
 
 }  // namespace bisect::tet
