@@ -330,14 +330,36 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
   }
   // the triangles turn so that their normals point out of cell_out: judged in 3D against the
   // piece's proxy facets (oriented the same way), not by the sign of an area in (u, v), which a
-  // tiny piece at a pole or across a seam can get wrong
-  Vec3 facing = Vec3::Zero();
+  // tiny piece at a pole or across a seam can get wrong. On a curved face each facet is compared
+  // with the surface's du x dv where it lies, and each triangle with du x dv where it lies: the
+  // facets' normals summed cancel on a piece that runs all the way round (a cylinder's whole
+  // side: its sum is nought, and a cylinder of radius 0.8 came out with its side inside out)
+  double along = 0;  // the facets' outward normals against du x dv, weighted by area
   for (const auto& [f, rev] : faces) {
     const ModelFace& face = bd.model.faces[f];
-    facing += (rev ? -1.0 : 1.0) * bd.model.face_area(f) * face.normal;
+    const Index k = bd.px.face_tri[face.source];
+    if (k < 0) continue;
+    const auto& tuv = bd.px.tess.faces[job.face].uv[k];
+    Vec3 du, dv;
+    surf.derivatives((tuv[0] + tuv[1] + tuv[2]) / 3, &du, &dv);
+    const Vec3 n = du.cross(dv);
+    if (n.norm() > 0) along += (rev ? -1.0 : 1.0) * bd.model.face_area(f) * face.normal.dot(n / n.norm());
   }
   double agree = 0;
-  for (const auto& t : rm.tris) agree += (rm.xyz[t[1]] - rm.xyz[t[0]]).cross(rm.xyz[t[2]] - rm.xyz[t[0]]).dot(facing);
+  if (along != 0) {
+    for (const auto& t : rm.tris) {
+      Vec3 du, dv;
+      surf.derivatives((rm.uv[t[0]] + rm.uv[t[1]] + rm.uv[t[2]]) / 3, &du, &dv);
+      agree += (rm.xyz[t[1]] - rm.xyz[t[0]]).cross(rm.xyz[t[2]] - rm.xyz[t[0]]).dot(du.cross(dv)) * along;
+    }
+  } else {  // a planar face's pieces are polygons: their normals are the face's
+    Vec3 facing = Vec3::Zero();
+    for (const auto& [f, rev] : faces) {
+      const ModelFace& face = bd.model.faces[f];
+      facing += (rev ? -1.0 : 1.0) * bd.model.face_area(f) * face.normal;
+    }
+    for (const auto& t : rm.tris) agree += (rm.xyz[t[1]] - rm.xyz[t[0]]).cross(rm.xyz[t[2]] - rm.xyz[t[0]]).dot(facing);
+  }
   out.tris = rm.tris;
   if (agree < 0)
     for (auto& t : out.tris) std::swap(t[1], t[2]);

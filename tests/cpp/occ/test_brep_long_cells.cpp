@@ -21,11 +21,13 @@
 namespace bisect {
 namespace {
 
-BrepInput rod() {
+BrepInput cylinder(double r, double h, const char* name) {
   std::ostringstream brep;
-  BRepTools::Write(BRepPrimAPI_MakeCylinder(5, 200).Shape(), brep);
-  return load_brep_string(brep.str(), "rod");
+  BRepTools::Write(BRepPrimAPI_MakeCylinder(r, h).Shape(), brep);
+  return load_brep_string(brep.str(), name);
 }
+
+BrepInput rod() { return cylinder(5, 200, "rod"); }
 
 TEST(BrepLongCells, ARodIsFilledByBoundaryRecovery) {
   const BrepInput in = rod();
@@ -48,6 +50,23 @@ TEST(BrepLongCells, ARodIsFilledByBoundaryRecovery) {
   const double v = test::corner_volume(m), want = 5000 * M_PI;
   EXPECT_LE(v, want * (1 + 1e-9));
   EXPECT_GE(v, want * 12 / (2 * M_PI) * std::sin(2 * M_PI / 12)) << R;
+  }
+}
+
+// A short cylinder meshed coarsely is one cell whose side is one face piece running all the way
+// round: the piece's proxy facets' normals sum to nothing, and its triangles' turn must be read
+// facet by facet (brep_grids.cpp). It came out inside out at 200 to 1,000 elements.
+TEST(BrepLongCells, AWholeCylinderSideTurnsOutwards) {
+  const BrepInput in = cylinder(0.8, 2, "cylinder");
+  for (int R : {200, 500, 1000}) {
+    GenerateOptions opt;
+    opt.sizing.elements = R;
+    GenerateStats st;
+    const TetMesh m = generate_brep_mesh(in, opt, &st);
+    EXPECT_TRUE(validate(m).empty()) << R;
+    const double v = test::corner_volume(m), want = 0.64 * 2 * M_PI;
+    EXPECT_LE(v, want * (1 + 1e-9)) << R;
+    EXPECT_GE(v, want * 12 / (2 * M_PI) * std::sin(2 * M_PI / 12)) << R;
   }
 }
 
