@@ -40,6 +40,31 @@ def settle(ms=300):
     FreeCADGui.updateGui()
 
 
+
+def select(obj):
+    """Selects obj alone (None: nothing), as a click in the tree would."""
+    FreeCADGui.Selection.clearSelection()
+    if obj is not None:
+        FreeCADGui.Selection.addSelection(obj)
+    settle(100)
+
+
+def dialog_button(which):
+    """The task dialog's OK or Cancel button, as the user sees it."""
+    for box in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
+        button = box.button(which)
+        if button is not None and button.isVisible():
+            return button
+    return None
+
+
+def report_view_text():
+    """The report view's text; None when the window has no report view."""
+    for widget in FreeCADGui.getMainWindow().findChildren(QtGui.QTextEdit):
+        if widget.metaObject().className().endswith("ReportOutput"):
+            return widget.toPlainText()
+    return None
+
 def register_staged_workbench():
     """Makes `import bisectmesh` load the staged package and registers its workbench. An installed
     copy (the user's Mod folder) may have registered an older InitGui.py: the staged one replaces

@@ -29,7 +29,8 @@ from PySide import QtCore, QtGui
 
 HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/gui_mesh.py")))
 sys.path.insert(0, HERE)
-from gui_harness import ARTIFACTS, check, command_state, log, settle, start, widen_combo_view  # noqa: E402
+from gui_harness import (ARTIFACTS, check, command_state, dialog_button, log, report_view_text, select, settle,  # noqa: E402
+                         start, widen_combo_view)
 
 COMMAND = "BisectMesh_Mesh"
 
@@ -48,20 +49,8 @@ def wait_for(condition, timeout, what):
     return time.time() - start, longest
 
 
-def select(obj):
-    FreeCADGui.Selection.clearSelection()
-    if obj is not None:
-        FreeCADGui.Selection.addSelection(obj)
-    settle(100)
 
 
-def dialog_button(which):
-    """The task dialog's OK or Cancel button, as the user sees it."""
-    for box in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
-        button = box.button(which)
-        if button is not None and button.isVisible():
-            return button
-    return None
 
 
 def show_all():
@@ -84,11 +73,6 @@ def save_window(name):
     return path
 
 
-def report_view_text():
-    for widget in FreeCADGui.getMainWindow().findChildren(QtGui.QTextEdit):
-        if widget.metaObject().className().endswith("ReportOutput"):
-            return widget.toPlainText()
-    return None
 
 
 def open_panel(part):

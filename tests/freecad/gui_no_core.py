@@ -15,18 +15,12 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui
-from PySide import QtGui
 
 HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/gui_no_core.py")))
 sys.path.insert(0, HERE)
-from gui_harness import BUILD_MOD, check, command_state, settle, start  # noqa: E402
+from gui_harness import BUILD_MOD, check, command_state, report_view_text, settle, start  # noqa: E402
 
 
-def report_view_text():
-    for widget in FreeCADGui.getMainWindow().findChildren(QtGui.QTextEdit):
-        if widget.metaObject().className().endswith("ReportOutput"):
-            return widget.toPlainText()
-    return ""
 
 
 def load_copy_without_core(folder):
@@ -47,7 +41,7 @@ def run():
     import fc_helpers
 
     FreeCADGui.activateWorkbench("StartWorkbench")
-    before = len(report_view_text())
+    before = len(report_view_text() or "")
     folder = tempfile.mkdtemp(prefix="bisectmesh-nocore-")
     try:
         copy = load_copy_without_core(folder)
@@ -70,7 +64,7 @@ def run():
         proxy._show_tooltip = shown.append
         proxy.IsActive()
         tooltip = shown[-1] if shown else ""
-        text = report_view_text()[before:]
+        text = (report_view_text() or "")[before:]
         lines = [line for line in text.splitlines() if "./scripts/setup.sh" in line]
         check(len(lines) == 1, "one line in the report view names ./scripts/setup.sh: %r" % lines)
         check("bisectmesh._core" in lines[0] if lines else False, "it names the missing module")

@@ -26,7 +26,7 @@ from PySide import QtCore, QtGui
 
 HERE = os.path.dirname(os.path.abspath(globals().get("__file__", "tests/freecad/gui_size_control.py")))
 sys.path.insert(0, HERE)
-from gui_harness import ARTIFACTS, check, log, settle, start, widen_combo_view  # noqa: E402
+from gui_harness import ARTIFACTS, check, dialog_button, log, select, settle, start, widen_combo_view  # noqa: E402
 
 
 def wait_for(condition, timeout, what):
@@ -38,19 +38,8 @@ def wait_for(condition, timeout, what):
     return time.time() - begin
 
 
-def select(obj):
-    FreeCADGui.Selection.clearSelection()
-    if obj is not None:
-        FreeCADGui.Selection.addSelection(obj)
-    settle(100)
 
 
-def dialog_button(which):
-    for box in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
-        button = box.button(which)
-        if button is not None and button.isVisible():
-            return button
-    return None
 
 
 def set_preferences_in_the_dialog(values):
