@@ -48,11 +48,13 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
   // the boundary nodes, Delaunay, nearest the previous first (short walks)
   TetComplex dt(Y);
   dt.build({big});
-  std::vector<Index> order = bnodes;
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+  // insertion order: by z, then y, then x (nearest the previous node first: short walks)
+  auto by_position = [&](Index a, Index b) {
     const Vec3 pa = X[a] - lo, pb = X[b] - lo;
     return std::tie(pa.z(), pa.y(), pa.x()) < std::tie(pb.z(), pb.y(), pb.x());
-  });
+  };
+  std::vector<Index> order = bnodes;
+  std::sort(order.begin(), order.end(), by_position);
   Index last = 0;
   for (Index v : order) {
     const std::vector<Index> made = dt.insert_delaunay(v, last);
@@ -121,10 +123,7 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
   cx.build(std::move(inside));
   st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
   std::vector<Index> rest = interior;
-  std::sort(rest.begin(), rest.end(), [&](Index a, Index b) {
-    const Vec3 pa = X[a] - lo, pb = X[b] - lo;
-    return std::tie(pa.z(), pa.y(), pa.x()) < std::tie(pb.z(), pb.y(), pb.x());
-  });
+  std::sort(rest.begin(), rest.end(), by_position);
   last = 0;
   for (Index v : rest) {
     while (!cx.alive[last]) ++last;  // the first live one: the walk starts from a tetrahedron
