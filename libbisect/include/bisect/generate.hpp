@@ -99,6 +99,9 @@ struct GenerateStats {
   std::int64_t proxy_cells = 0;  // cells filled in the proxy's geometry (proxy_fill.hpp)
   std::int64_t joined_cells = 0; // cells joined with a neighbour to be seen whole (brep_cells.hpp)
   std::int64_t recovered_cells = 0; // cells filled by Delaunay boundary recovery (tet/recovery_fill.hpp)
+  // cells whose star fill (smallest dihedral under 5 degrees) was replaced by a better one from
+  // Delaunay boundary recovery: thin cells, whose two sides' grids are not in line
+  std::int64_t refilled_cells = 0;
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

@@ -14,6 +14,7 @@ using tet::tet_angle_key;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kLargestStar = 200;  // tetrahedra round a node the repair still moves
 
 double tet_worst(const std::vector<Vec3>& X, const Tet& u) { return worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]); }
 
@@ -87,7 +88,10 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
       for (int k = 0; k < 4; ++k) {
         const Index v = u[k];
         if (fixed[v]) continue;
-        const std::vector<Index> around = star(cx, v, t);
+        const std::vector<Index> around = star(cx, v, t, kLargestStar);
+        // a node in hundreds of tetrahedra (a helper a thin cell kept) is no sliver's to move:
+        // trying its 13 places costs the whole star each time, and one place cannot suit all
+        if (around.size() > kLargestStar) continue;
         const double base = star_worst(X, cx.tet, around);
         const Vec3 &a = X[u[(k + 1) % 4]], &b = X[u[(k + 2) % 4]], &c = X[u[(k + 3) % 4]];
         Vec3 n = (b - a).cross(c - a);

@@ -102,6 +102,11 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   // that fail too, on the first (a very coarse curvature bound, 3 elements per turn, can leave the
   // finer proxies' cells no better off).
   constexpr int kProxyAttempts = 4;  // the proxy's angle, a half and a third of it, then the first again
+  // The walls' cap (size/wall_thickness.hpp) makes finer grids beside curved faces, which can
+  // leave a cell that none of the fills above takes (FreeCAD's constraint_tie at 6,044); when
+  // the first two proxies have failed with it, the attempts start again without it, so that the
+  // cap improves a mesh and never costs one.
+  bool use_walls = true;
   for (int attempt = 0;; ++attempt) {
     const double angle = attempt < 3 ? first_angle / (1 + attempt) : first_angle;
     const bool last_resort_allowed = attempt >= 2;
@@ -122,13 +127,17 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     // boundary), the cells are filled, and when the count still misses R by more than 10% the
     // filling's own ratio corrects the prediction and the search runs again (at most two fillings).
     double scale = 1, np = opt.sizing.size > 0 ? opt.sizing.size : nominal_spacing(volume, want);
+    // the walls' thickness, once per decomposition: up to four times the first spacing, room for
+    // the count search's coarser rounds (kWallSizeFactor: elements no larger than a wall is thick)
+    const std::vector<size::WallSample> walls =
+        use_walls ? size::wall_thickness(in, dc.proxy.tess, 4 * np / size::kWallSizeFactor) : std::vector<size::WallSample>{};
     double best_miss = 1e300;
     for (int filling = 0; filling < 2; ++filling) {
       pipeline::BrepPlacement placed;
       double placed_miss = 1e300, placed_np = np, last_predicted = 0, last_np = 0;
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
-        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes);
+        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls);
         pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads);
         st.gen_nodes += since(t_nodes);
         if (progress && !progress(0.35)) throw Cancelled();
@@ -172,7 +181,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     }
       break;
     } catch (const MeshingError& e) {
-      if (attempt >= kProxyAttempts - 1) throw;
+      if (use_walls && attempt >= 1) use_walls = false, attempt = -1;
+      else if (attempt >= kProxyAttempts - 1) throw;
       const double total = st.total;
       st = GenerateStats{};
       st.total = total;
@@ -182,6 +192,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   best.on_boundary.resize(best.X.size(), 0);  // helpers the cells kept are inside
   st.graded_nodes = best.graded_nodes;
   st.helper_nodes = filled.helper_nodes, st.helpers_removed = filled.helpers_removed;
+  st.refilled_cells = filled.refilled;
   st.skipped_nodes = filled.skipped_nodes, st.flips = filled.flips;
   st.surface_min_angle = best.grids.min_angle_deg;
   // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
@@ -214,7 +225,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   }
   if (progress && !progress(1.0)) throw Cancelled();
   if (opt.sizing.size <= 0 && static_cast<double>(out.num_tets()) > 1.2 * want) {
-    // more than R asked: the smallest B-rep edges or the curvature bound set the floor (sizes
+    // more than R asked: the thinnest walls, the smallest B-rep edges or the curvature bound set the floor (sizes
     // printed to 3 digits, at least the size field's own floor)
     st.count_floor = static_cast<std::int64_t>(out.num_tets());
     auto length = [](double x) {
@@ -222,7 +233,11 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       std::snprintf(text, sizeof text, "%.3g", x);
       return std::string(text);
     };
-    if (sizes.smallest_edge > 0 && (sizes.smallest_curvature_size <= 0 || sizes.smallest_edge < sizes.smallest_curvature_size))
+    const double wall_size = size::kWallSizeFactor * sizes.thinnest_wall;
+    auto finer = [](double a, double b) { return a > 0 && (b <= 0 || a < b); };  // a set, and below b (0: none)
+    if (finer(wall_size, sizes.smallest_edge) && finer(wall_size, sizes.smallest_curvature_size))
+      st.count_floor_reason = "thickness: walls down to " + length(sizes.thinnest_wall) + " thick, elements no larger across them";
+    else if (finer(sizes.smallest_edge, sizes.smallest_curvature_size))
       st.count_floor_reason = "features: B-rep edges down to " + length(sizes.smallest_edge);
     else if (sizes.smallest_curvature_size > 0)
       st.count_floor_reason = "curvature: elements down to " + length(sizes.smallest_curvature_size) + " on curved faces";

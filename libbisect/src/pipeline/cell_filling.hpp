@@ -35,6 +35,7 @@ struct FilledCells {
   std::vector<tet::Tet> tets;
   std::vector<Index> region;
   std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0;
+  std::int64_t refilled = 0;  // star fills replaced by Delaunay boundary recovery's, a better one
 };
 
 // Fills every job; a helper node a cell keeps joins X. progress(fraction of cells done) is called

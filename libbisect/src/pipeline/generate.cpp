@@ -73,6 +73,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.count_floor = cal.count_floor;
   if (st.count_floor > 0) st.count_floor_reason = "facets";  // the input's own nodes and edges
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
+  st.refilled_cells = b.refilled_cells;
   st.graded_nodes = b.graded_nodes;
   st.spacing = cal.spacing;
   // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
@@ -117,7 +118,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": \"" << s.count_floor_reason << "\", \"surface_min_angle\": " << s.surface_min_angle
-    << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells
+    << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
     << "}, \"quality\": " << quality_json(q) << "}";

@@ -16,6 +16,7 @@ namespace bisect::pipeline {
 // The nodes of one placement, then the tetrahedra the cell fill makes of them.
 struct Built {
   std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0, graded_nodes = 0;
+  std::int64_t refilled_cells = 0;
   std::vector<Vec3> X;
   std::vector<tet::Tet> tets;
   std::vector<Index> region;

@@ -49,7 +49,8 @@ double curvature_size(double kappa, const SizeOptions& o, double none) {
   return s;
 }
 
-SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o, BrepSizeReport* report) {
+SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o, BrepSizeReport* report,
+                          const std::vector<WallSample>* walls) {
   check_options(in, o);
   BrepSizeReport rep;
   // A floor under every size even without min_size: a cone's apex or a pole has unbounded
@@ -147,6 +148,14 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
       }
     }
   }
+  // walls thinner than the base: elements no larger than the wall is thick
+  if (walls)
+    for (const WallSample& w : *walls) {
+      const double s = kWallSizeFactor * w.thickness;
+      if (s >= field.base()) continue;
+      add(w.p, s, &rep.wall_sources);
+      rep.thinnest_wall = rep.thinnest_wall > 0 ? std::min(rep.thinnest_wall, w.thickness) : w.thickness;
+    }
   field.finish();
   if (report) *report = rep;
   return field;
