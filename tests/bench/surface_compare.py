@@ -5,7 +5,10 @@ surface triangles' smallest angles) printed as JSON.
 
 Run on demand (not a pass/fail test), with FreeCAD's interpreter:
     freecadcmd tests/bench/surface_compare.py
-(freecadcmd opens its arguments as documents: BISECT_PICTURE=OUT.png picks another picture.)
+(freecadcmd opens its arguments as documents: BISECT_PICTURE=OUT.png picks another picture,
+BISECT_SHAPE another shape: box-hole (the default), tube (FreeCAD's constraint_transform_torque,
+radius 5, wall 1, length 50, at its shipped 2,869 tetrahedra asked: the wall caps the size) or
+plate (50 x 20 x 1 at 500 asked).)
 Gmsh's CharacteristicLengthMax is searched until its count is within 10% of BisectMesh's.
 """
 
@@ -38,6 +41,18 @@ def box_with_hole_and_fillets():
     vertical = [e for e in box.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1]
     box = box.makeFillet(5, vertical)
     return box.cut(Part.makeCylinder(8, 20, FreeCAD.Vector(30, 20, 0)))
+
+
+def tube():
+    return Part.makeCylinder(5, 50).cut(Part.makeCylinder(4, 50))
+
+
+# name -> (shape maker, elements asked, Gmsh's first length, picture)
+SHAPES = {
+    "box-hole": (box_with_hole_and_fillets, ELEMENTS, 4.0, "box-hole-fillets.png"),
+    "tube": (tube, 2869, 1.5, "thin-tube.png"),
+    "plate": (lambda: Part.makeBox(50, 20, 1), 500, 1.0, "thin-plate.png"),
+}
 
 
 def surface_triangles(arrays):
@@ -118,16 +133,20 @@ def draw(panels, out):
 
 
 def main():
-    out = os.environ.get("BISECT_PICTURE") or os.path.join(ROOT, "docs", "images", "box-hole-fillets.png")
-    shape = box_with_hole_and_fillets()
+    name = os.environ.get("BISECT_SHAPE", "box-hole")
+    if name not in SHAPES:
+        raise SystemExit("BISECT_SHAPE: one of %s (got %r)" % (", ".join(SHAPES), name))
+    make, elements, length, picture = SHAPES[name]
+    out = os.environ.get("BISECT_PICTURE") or os.path.join(ROOT, "docs", "images", picture)
+    shape = make()
     doc = FreeCAD.newDocument("SurfaceCompare")
     try:
         part = doc.addObject("Part::Feature", "Part")
         part.Shape = shape
         doc.recompute()
-        bisect, bn, bt = figures(shape_mesher.mesh_shape(shape, elements=ELEMENTS, order=1))
+        bisect, bn, bt = figures(shape_mesher.mesh_shape(shape, elements=elements, order=1))
+        bisect["elements_asked"] = elements
         # Gmsh's size searched for the same count (its count goes as length^-3)
-        length = 4.0
         for _ in range(8):
             gm, gn, gt = figures(gmsh_mesh(doc, part, length))
             ratio = gm["tets"] / bisect["tets"]
