@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <limits>
 
 namespace bisect::size {
@@ -154,25 +153,24 @@ std::vector<WallSample> wall_thickness(const BrepInput& in, const BrepTessellati
   // vertex with the face it starts from: near an edge where two faces meet at an acute angle
   // that distance goes to nought, and it is no wall (elements there are bound by the edge's
   // angle, and no size mends that)
-  std::vector<std::vector<Index>> corners(in.faces.size());
+  std::vector<std::vector<Index>> corners(in.faces.size()), faces_at(in.vertices.size());
   for (std::size_t f = 0; f < in.faces.size(); ++f) {
     for (const auto& wire : in.faces[f].wires)
       for (const BrepEdgeUse& use : wire) {
         if (use.edge < 0 || static_cast<std::size_t>(use.edge) >= in.edges.size()) continue;
-        corners[f].push_back(in.edges[use.edge].v0);
-        corners[f].push_back(in.edges[use.edge].v1);
+        for (Index v : {in.edges[use.edge].v0, in.edges[use.edge].v1})
+          if (v >= 0 && static_cast<std::size_t>(v) < in.vertices.size()) corners[f].push_back(v);
       }
     std::sort(corners[f].begin(), corners[f].end());
     corners[f].erase(std::unique(corners[f].begin(), corners[f].end()), corners[f].end());
+    for (Index v : corners[f]) faces_at[v].push_back(static_cast<Index>(f));
   }
   std::vector<char> near(in.faces.size(), 0);
   for (std::size_t f = 0; f < in.faces.size(); ++f) {
     if (first[f] == first[f + 1]) continue;
-    for (std::size_t g = 0; g < in.faces.size(); ++g) {
-      std::vector<Index> shared;
-      std::set_intersection(corners[f].begin(), corners[f].end(), corners[g].begin(), corners[g].end(), std::back_inserter(shared));
-      near[g] = g != f && !shared.empty();
-    }
+    for (Index v : corners[f])
+      for (Index g : faces_at[v]) near[g] = 1;
+    near[f] = 0;
     for (std::size_t k = first[f]; k < first[f + 1]; ++k) {
       const Triangle& t = tris[k];
       const Vec3 n = (t.b - t.a).cross(t.c - t.a).normalized();
@@ -185,9 +183,9 @@ std::vector<WallSample> wall_thickness(const BrepInput& in, const BrepTessellati
           const Vec3 p = t.a + ba * (t.b - t.a) + bb * (t.c - t.a);
           return std::pair<Vec3, double>(p, tree.first_hit(p, d, skip, std::numeric_limits<double>::infinity(), near));
         };
-        const double third = 1.0 / 3.0, near = 1 - 2 * kInset;
+        const double third = 1.0 / 3.0, across = 1 - 2 * kInset;
         double thinnest = std::numeric_limits<double>::infinity();
-        for (const auto& [ba, bb] : {std::pair<double, double>{third, third}, {kInset, kInset}, {near, kInset}, {kInset, near}})
+        for (const auto& [ba, bb] : {std::pair<double, double>{third, third}, {kInset, kInset}, {across, kInset}, {kInset, across}})
           thinnest = std::min(thinnest, thickness(ba, bb).second);
         if (!(thinnest < limit)) continue;
         const double longest = std::max({(t.b - t.a).norm(), (t.c - t.b).norm(), (t.a - t.c).norm()});
@@ -202,6 +200,8 @@ std::vector<WallSample> wall_thickness(const BrepInput& in, const BrepTessellati
             }
       }
     }
+    for (Index v : corners[f])
+      for (Index g : faces_at[v]) near[g] = 0;
   }
   return out;
 }
