@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
@@ -83,6 +84,22 @@ std::vector<Index> separator_nodes(std::vector<Vec2>& X, Index a, Index b, doubl
     out.push_back(static_cast<Index>(X.size() - 1));
   }
   return out;
+}
+
+// A loop cut along a separator between its nodes k and j: the side from node k to node j closed
+// by `back` (the separator's inner nodes from loop[j] towards loop[k]), then the side from j to
+// k closed by the same nodes the other way.
+std::pair<std::vector<Index>, std::vector<Index>> split_loop(const std::vector<Index>& loop, std::size_t k, std::size_t j,
+                                                             const std::vector<Index>& back) {
+  const std::size_t n = loop.size();
+  std::vector<Index> first, second;
+  for (std::size_t i = k; i != j; i = (i + 1) % n) first.push_back(loop[i]);
+  first.push_back(loop[j]);
+  first.insert(first.end(), back.begin(), back.end());
+  for (std::size_t i = j; i != k; i = (i + 1) % n) second.push_back(loop[i]);
+  second.push_back(loop[k]);
+  second.insert(second.end(), back.rbegin(), back.rend());
+  return {std::move(first), std::move(second)};
 }
 
 double area2(const std::vector<Vec2>& X, const std::vector<Index>& l) {
@@ -232,14 +249,7 @@ bool cut_pinches(std::vector<Vec2>& X, std::vector<Index> walk, const std::vecto
       if (pa != n) break;
     }
     if (pa == n) return false;
-    const std::vector<Index> mid = separator_nodes(X, w[pb], w[pa], h);  // from pb towards pa
-    std::vector<Index> one, two;
-    for (std::size_t k = pa; k != pb; k = (k + 1) % n) one.push_back(w[k]);
-    one.push_back(w[pb]);
-    one.insert(one.end(), mid.begin(), mid.end());
-    for (std::size_t k = pb; k != pa; k = (k + 1) % n) two.push_back(w[k]);
-    two.push_back(w[pa]);
-    two.insert(two.end(), mid.rbegin(), mid.rend());
+    auto [one, two] = split_loop(w, pa, pb, separator_nodes(X, w[pb], w[pa], h));  // the separator from pb towards pa
     todo.push_back(std::move(one));
     todo.push_back(std::move(two));
   }
@@ -426,14 +436,10 @@ std::vector<std::vector<Index>> convex_pieces(std::vector<Vec2>& X, const std::v
       out.push_back(std::move(l));
       continue;
     }
+    // the separator's nodes are made from the reflex vertex on, and split_loop takes them the
+    // other way
     const std::vector<Index> mid = separator_nodes(X, l[reflex], l[bw], h);
-    std::vector<Index> p1, p2;
-    for (std::size_t k = reflex; k != bw; k = (k + 1) % n) p1.push_back(l[k]);
-    p1.push_back(l[bw]);
-    for (std::size_t k = mid.size(); k-- > 0;) p1.push_back(mid[k]);
-    for (std::size_t k = bw; k != reflex; k = (k + 1) % n) p2.push_back(l[k]);
-    p2.push_back(l[reflex]);
-    p2.insert(p2.end(), mid.begin(), mid.end());
+    auto [p1, p2] = split_loop(l, reflex, bw, std::vector<Index>(mid.rbegin(), mid.rend()));
     simple.push_back(std::move(p1));
     simple.push_back(std::move(p2));
   }
