@@ -1,4 +1,5 @@
-"""What the benchmark plots share: a headless matplotlib and the least-squares slope in log-log."""
+"""What the benchmark plots share: a headless matplotlib, the least-squares slope in log-log, and
+the finish of a figure (grids, legends, the file)."""
 import math
 
 import matplotlib
@@ -14,3 +15,12 @@ def fit(xs, ys):
     n = len(lx)
     mx, my = sum(lx) / n, sum(ly) / n
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+
+
+def finish(fig, axes, dst):
+    """Log grids and legends on every axes, then the figure written to dst (PNG, 100 dpi)."""
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(dst, dpi=100)

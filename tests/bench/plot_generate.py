@@ -2,7 +2,7 @@
 import csv
 import sys
 
-from plot_common import fit, plt
+from plot_common import finish, fit, plt
 
 
 def main(src, dst):
@@ -15,10 +15,7 @@ def main(src, dst):
     ax.set_xlabel("tetrahedra")
     ax.set_ylabel("seconds")
     ax.set_title("BisectMesh on %s" % rows[0]["model"])
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(dst, dpi=100)
+    finish(fig, [ax], dst)
 
 
 if __name__ == "__main__":

@@ -23,8 +23,8 @@ enum class ViolationKind {
   NonFiniteNode,    // a node with a NaN or infinite coordinate; ids: the node (the tetrahedra
                     // using it are not judged for orientation)
   NonPositiveJacobian,  // order 2: the element's Jacobian determinant is zero or negative at a
-                        // corner or at one of the 4 Gauss points CalculiX integrates C3D10 at;
-                        // ids: tetrahedron
+                        // corner, at one of the 4 Gauss points CalculiX integrates C3D10 at, at
+                        // an edge's middle or at the centre; ids: tetrahedron
 };
 
 // The kind as a snake_case name ("inverted_tet"), the spelling of the CLI's JSON and Python.
@@ -36,8 +36,8 @@ struct Violation {
   std::string message;            // one line naming what and where
 };
 
-// Order 2: the smallest determinant of tetrahedron t's Jacobian over its 4 corners and the 4
-// Gauss points of the 4-point rule, divided by the straight element's (6 V, positive for a
+// Order 2: the smallest determinant of tetrahedron t's Jacobian over its 4 corners, the 4
+// Gauss points of the 4-point rule, its 6 edges' middles and its centre, divided by the straight element's (6 V, positive for a
 // positively oriented one). 1 for a straight element; <= 0 for a folded one.
 double tet10_jacobian_ratio(const TetMesh& mesh, std::size_t t);
 

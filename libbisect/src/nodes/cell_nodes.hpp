@@ -4,7 +4,9 @@
 // edge; nodes go on each of its faces by the 2D placement (edges at spacing Np, face interiors
 // by 2D shrinking), nodes closer than Np / 2 merged (short edges, narrowness); repeated until
 // the layer is empty. A layer thinner than Np / 2 gets one sheet of nodes through its middle and
-// ends the shrinking. Every node is then moved by a small deterministic jitter (see
+// ends the shrinking; so does the layer half a spacing deeper than the last one, when it exists
+// (the gap left is wider than Np). A sheet narrower than Np / 2 becomes a line of nodes through
+// its middle, a small one a node at its centre. Every node is then moved by a small deterministic jitter (see
 // kNodeJitter) that breaks the co-spherical ties of the layers' regular grids.
 #pragma once
 #include <vector>

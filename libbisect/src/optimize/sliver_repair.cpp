@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
+#include <cstdlib>
 
 #include "geom/predicates.hpp"
 #include "optimize/node_stars.hpp"
@@ -125,16 +127,24 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
     // the transformations from the faces of the tetrahedra around moved nodes
     cx.improve_around(touched);
     // A stuck tetrahedron whose four nodes are fixed (four nodes on a curved boundary, the
-    // typical case) gets a new free node half an edge inside it, away from its largest face
-    // (the boundary face, when it has one), inserted with a Delaunay cavity, which takes the
-    // flat tetrahedron when its circumsphere holds the node; the next round moves that node
-    // where its tetrahedra are best.
+    // typical case) gets a new free node off its largest face (the boundary face, when it has
+    // one), inserted with a Delaunay cavity, which takes the flat tetrahedron when its
+    // circumsphere holds the node; the next round moves that node where its tetrahedra are
+    // best. Three distances are tried (inserted and undone), the one whose new tetrahedra are
+    // best kept. A flat tetrahedron with no boundary face (two nodes on each of two boundary
+    // faces that meet at an edge) may have room on one side of its largest face only: both
+    // sides are tried, and the node goes in only if its tetrahedra beat the stuck one (lug.stl
+    // at 10^6: half an edge off, always on one side, the node went towards the edge, onto one
+    // face's plane, and a 6 degree sliver became a 0.6 degree one, every round again; on the
+    // better side, a 2 degree one).
     std::size_t inserted = 0;
+    std::vector<Tet> replaced;
     for (Index t : stuck) {
       if (round + 1 >= rounds || !cx.alive[t]) continue;
       const Tet u = cx.tet[t];
       if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;
-      if (tet_worst(X, u) <= limit) continue;
+      const double stuck_worst = tet_worst(X, u);
+      if (stuck_worst <= limit) continue;
       // the largest boundary face's area normal, else the largest face's (faces' normals point
       // out of t): a flat tetrahedron's largest face may be an inner one, whose normal would
       // send the node out of the mesh
@@ -147,14 +157,45 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
         if ((b && !on_boundary) || (b == on_boundary && n.squaredNorm() > outward.squaredNorm())) outward = n, on_boundary = b;
       }
       const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
-      X.push_back(here - 0.5 * mean_edge(X, u) * outward.normalized());
-      fixed.push_back(0);
-      const std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), t);
-      if (made.empty()) {  // on a face or node after all: leave it
+      const Vec3 step = 0.5 * mean_edge(X, u) * outward.normalized();
+      // a node inserted at p: the tetrahedra it made, `replaced` what they replaced (from
+      // `start`, a live tetrahedron near: t, or after an undone trial one of what came back)
+      Index start = t;
+      auto insert_at = [&](const Vec3& p) {
+        X.push_back(p);
+        fixed.push_back(0);
+        std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), start, &replaced);
+        if (made.empty()) {  // on a face or node after all: left out
+          X.pop_back();
+          fixed.pop_back();
+        }
+        return made;
+      };
+      // the places tried: a quarter, half and three quarters of an edge off the face, on its
+      // inner side only for a boundary face, on both sides otherwise; each inserted, judged by
+      // the worst tetrahedron it made, and undone
+      std::vector<Vec3> places;
+      for (double s : {1.0, 0.5, 1.5}) {
+        places.push_back(here - s * step);
+        if (!on_boundary) places.push_back(here + s * step);
+      }
+      double best = 3;
+      Vec3 best_place = here;
+      for (const Vec3& p : places) {
+        const std::vector<Index> tried = insert_at(p);
+        if (tried.empty()) continue;
+        double worst = -1;
+        for (Index m : tried) worst = std::max(worst, tet_worst(X, cx.tet[m]));
+        if (worst < best) best = worst, best_place = p;
+        start = cx.replace(tried, replaced).front();
         X.pop_back();
         fixed.pop_back();
-        continue;
       }
+      // the best place kept; off an inner face only when its tetrahedra beat the stuck one (no
+      // new node at all is better than one that makes the sliver flatter)
+      std::vector<Index> made;
+      if (best < 3 && (on_boundary || best < stuck_worst)) made = insert_at(best_place);
+      if (made.empty()) continue;
       ++inserted;
       cx.improve_around(made);
     }

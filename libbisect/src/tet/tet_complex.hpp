@@ -94,8 +94,9 @@ class TetComplex {
   std::vector<Index> insert(Index v, Index start);
   // The same insertion with a Delaunay cavity (Bowyer-Watson, exact insphere): every
   // tetrahedron reachable without crossing a constrained face whose circumsphere holds v is
-  // replaced too, the cavity shrunk until v sees all its faces from inside.
-  std::vector<Index> insert_delaunay(Index v, Index start);
+  // replaced too, the cavity shrunk until v sees all its faces from inside. `replaced`, if
+  // given, receives the cavity's tetrahedra: replace(made, *replaced) undoes the insertion.
+  std::vector<Index> insert_delaunay(Index v, Index start, std::vector<Tet>* replaced = nullptr);
 
   // Local min-max transformations (7.5) from the given faces onwards, whenever they raise the
   // smallest solid angle of the tetrahedra involved: 2-3 across a face, 2-2 at the outer

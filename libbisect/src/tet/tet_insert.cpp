@@ -94,7 +94,7 @@ std::vector<Index> TetComplex::insert(Index v, Index start) {
   return replace(hold, fresh);
 }
 
-std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
+std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector<Tet>* replaced) {
   const Vec3& p = X[v];
   const Index t0 = locate(p, start);
   if (t0 < 0) return {};
@@ -161,6 +161,10 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start) {
       m[f] = v;
       fresh.push_back(m);
     }
+  if (replaced) {
+    replaced->clear();
+    for (Index t : cavity) replaced->push_back(tet[t]);
+  }
   return replace(cavity, fresh);
 }
 

@@ -1,5 +1,6 @@
 // 3D convex domain shrinking (thesis 7.4): polytope clipping, layers of nodes inside the cell at
-// the spacing, sharp edges cut off, thin layers as one sheet.
+// the spacing, sharp edges cut off, thin layers as one sheet, gaps wider than the spacing a sheet
+// or a line through their middle.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -64,7 +65,34 @@ TEST(CellNodes, ThinCellGetsOneSheetAndTinyCellNone) {
   ASSERT_FALSE(sheet.empty());
   for (const Vec3& p : sheet) EXPECT_NEAR(p.z(), 0.12, kShift);
   EXPECT_GT(min_gap(sheet), 0.5 * np - 2 * kShift * std::sqrt(3.0));
-  EXPECT_TRUE(shrink_cell_nodes(box(0.15, 0.15, 0.15), np).empty());
+  EXPECT_TRUE(shrink_cell_nodes(box(0.09, 0.09, 0.09), np).empty());  // no gap as wide as np
+}
+
+TEST(CellNodes, GapWiderThanTheSpacingGetsNodesThroughItsMiddle) {
+  const double np = 0.1;
+  // 1.5 spacings each way: no layer at np, one node at the centre
+  const std::vector<Vec3> one = shrink_cell_nodes(box(0.15, 0.15, 0.15), np);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_NEAR((one[0] - Vec3(0.075, 0.075, 0.075)).norm(), 0, std::sqrt(3.0) * kShift);
+  // a 1.5 x 1.5 x 10 spacings bar: one line of nodes along its axis, np apart, from 0.05 to 0.95
+  const std::vector<Vec3> line = shrink_cell_nodes(box(0.15, 0.15, 1.0), np);
+  ASSERT_GE(line.size(), 8u);
+  ASSERT_LE(line.size(), 11u);
+  double lo = 1, hi = 0;
+  for (const Vec3& p : line) {
+    EXPECT_NEAR(p.x(), 0.075, kShift);
+    EXPECT_NEAR(p.y(), 0.075, kShift);
+    lo = std::min(lo, p.z()), hi = std::max(hi, p.z());
+  }
+  EXPECT_NEAR(lo, 0.05, kShift);
+  EXPECT_NEAR(hi, 0.95, kShift);
+  EXPECT_GT(min_gap(line), 0.9 * np - 2 * kShift * std::sqrt(3.0));
+  // a slab 3.5 spacings thick: layers at np and 2 np from each side, 1.5 np apart, and a sheet
+  // half way between them
+  const std::vector<Vec3> slab = shrink_cell_nodes(box(1, 1, 0.35), np);
+  std::size_t middle = 0;
+  for (const Vec3& p : slab) middle += std::abs(p.z() - 0.175) < kShift;
+  EXPECT_GT(middle, 20u);
 }
 
 TEST(CellNodes, SharpWedgeKeepsClearOfItsEdge) {

@@ -89,6 +89,30 @@ TEST(TetComplex, PointsOnTheBoundaryAreRefused) {
   EXPECT_EQ(cx.live_count(), 6u);
 }
 
+TEST(TetComplex, DelaunayInsertionIsUndoneByReplacingWhatItMadeWithItsCavity) {
+  std::vector<Vec3> X = cube_nodes();
+  X.push_back({0.6, 0.3, 0.2});
+  TetComplex cx(X);
+  cx.build(cube_tets(X));
+  auto sorted_tets = [](const TetComplex& c) {  // each tetrahedron's nodes sorted, then the list
+    std::vector<Tet> out = c.tets();
+    for (Tet& t : out) std::sort(t.begin(), t.end());
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const std::vector<Tet> before = sorted_tets(cx);
+  std::vector<Tet> replaced;
+  const std::vector<Index> made = cx.insert_delaunay(8, 0, &replaced);
+  ASSERT_FALSE(made.empty());
+  EXPECT_FALSE(replaced.empty());
+  cx.replace(made, replaced);
+  expect_consistent(cx);
+  EXPECT_EQ(cx.live_count(), 6u);
+  EXPECT_NEAR(volume(cx), 1.0, 1e-12);
+  EXPECT_EQ(boundary_faces(cx), 12u);
+  EXPECT_EQ(sorted_tets(cx), before);  // the same six tetrahedra, the inserted node in none
+}
+
 TEST(TetComplex, RandomInsertionsBothWaysStayValidAndImprove) {
   for (bool delaunay : {false, true}) {
     std::vector<Vec3> X = cube_nodes();

@@ -232,6 +232,23 @@ TEST(Validate, BadMidNode) {
   EXPECT_NE(v[0].message.find("edge 1-2"), std::string::npos) << v[0].message;
 }
 
+TEST(Validate, Tet10FoldedBetweenItsGaussPointsIsCaught) {
+  // A unit tetrahedron whose mid-nodes of edges 03 and 23 moved (as curved boundary mid-nodes
+  // can): its Jacobian is positive at the 4 corners and the 4 Gauss points (27% of the straight
+  // one's at worst) and negative at an edge's middle, so it folds in between.
+  TetMesh linear;
+  linear.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const Index t[4] = {0, 1, 2, 3};
+  linear.add_tet(t);
+  TetMesh m = test::to_order2(linear);
+  m.nodes[m.tet_node(0, 4 + 3)] = Vec3(0.176, -0.365, 0.784);  // edge 03
+  m.nodes[m.tet_node(0, 4 + 5)] = Vec3(-0.043, -0.662, 0.615);  // edge 23
+  EXPECT_LT(tet10_jacobian_ratio(m, 0), 0);
+  const auto v = of_kind(validate(m), ViolationKind::NonPositiveJacobian);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_EQ(v[0].ids, Ids{1});
+}
+
 TEST(Validate, SortedByKindThenId) {
   TetMesh m = test::cube_mesh(2);
   std::swap(m.tets[4 * 30 + 1], m.tets[4 * 30 + 2]);  // inverted, id 31
