@@ -17,25 +17,29 @@ namespace {
 
 std::pair<Index, Index> edge_key(Index a, Index b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
-// Every edge of the live faces discretised once: node spacings no larger than h, than the
-// node's shortest edge, nor than the spacing the input asks of the node; inner nodes graded
-// between them.
-void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
+// Every edge of the live faces discretised once: node spacings no larger than h (or the
+// smallest spacing of the edge's faces, face_h), than the node's shortest edge, nor than the
+// spacing the input asks of the node; inner nodes graded between them.
+void discretise_edges(const PolyhedralModel& model, double h, const std::vector<double>& face_h, FaceGrids& g) {
   g.nodes = model.nodes;
   g.face_of.assign(g.nodes.size(), -1);
   g.spacing.assign(model.nodes.size(), h);
   for (std::size_t v = 0; v < model.node_spacing.size() && v < g.spacing.size(); ++v)
     if (model.node_spacing[v] > 0) g.spacing[v] = std::min(h, model.node_spacing[v]);
   g.edge_nodes.clear();
-  for (const ModelFace& f : model.faces) {
+  std::map<std::pair<Index, Index>, double> edge_h;  // per edge: the smallest of its faces' spacings
+  for (std::size_t fi = 0; fi < model.faces.size(); ++fi) {
+    const ModelFace& f = model.faces[fi];
     if (!f.alive) continue;
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Index a = loop[i], b = loop[(i + 1) % loop.size()];
         const double len = (model.nodes[a] - model.nodes[b]).norm();
-        g.spacing[a] = std::min(g.spacing[a], len);
-        g.spacing[b] = std::min(g.spacing[b], len);
+        g.spacing[a] = std::min({g.spacing[a], len, face_h[fi]});
+        g.spacing[b] = std::min({g.spacing[b], len, face_h[fi]});
         g.edge_nodes.emplace(edge_key(a, b), std::vector<Index>{});
+        const auto [it, fresh] = edge_h.emplace(edge_key(a, b), face_h[fi]);
+        if (!fresh) it->second = std::min(it->second, face_h[fi]);
       }
   }
   auto hint = [&](Index v) { return std::size_t(v) < model.node_spacing.size() ? model.node_spacing[v] : 0.0; };
@@ -43,9 +47,10 @@ void discretise_edges(const PolyhedralModel& model, double h, FaceGrids& g) {
     const Vec3 p = model.nodes[e.first], q = model.nodes[e.second];
     const double sa = g.spacing[e.first], sb = g.spacing[e.second];
     const double len = (q - p).norm();
+    const double he = edge_h.at(e);
     // an edge whose both ends ask for a spacing keeps it all along (a curved face's ruling
-    // strip stays as fine as its chords); other edges grow towards h in their middle
-    const double cap = hint(e.first) > 0 && hint(e.second) > 0 ? std::min(h, std::max({hint(e.first), hint(e.second), sa, sb})) : h;
+    // strip stays as fine as its chords); other edges grow towards their faces' h in their middle
+    const double cap = hint(e.first) > 0 && hint(e.second) > 0 ? std::min(he, std::max({hint(e.first), hint(e.second), sa, sb})) : he;
     for (double f : graded_edge_fractions(len, sa, sb, cap)) {
       g.nodes.push_back(p + (q - p) * f);
       g.spacing.push_back(edge_spacing_at(f * len, len, sa, sb, cap));
@@ -137,7 +142,10 @@ void commit_face(Index fi, double h, FaceGrid& fg, FaceGrids& g) {
 FaceGrids mesh_once(const PolyhedralModel& model, double h, const FaceGridOptions& opt) {
   FaceGrids g;
   g.h = h;
-  discretise_edges(model, h, g);
+  std::vector<double> face_h(model.faces.size(), h);  // each face's own spacing
+  for (std::size_t fi = 0; fi < face_h.size() && fi < opt.face_size.size(); ++fi)
+    if (opt.face_size[fi] > 0) face_h[fi] = std::min(h, opt.face_size[fi]);
+  discretise_edges(model, h, face_h, g);
   g.face_tris.assign(model.faces.size(), {});
   std::vector<Index> live;
   for (std::size_t fi = 0; fi < model.faces.size(); ++fi)
@@ -146,9 +154,9 @@ FaceGrids mesh_once(const PolyhedralModel& model, double h, const FaceGridOption
   const std::vector<Vec3> edge_and_model_nodes = g.nodes;
   util::ordered_parallel(
       live.size(), util::thread_count(opt.threads),
-      [&](std::size_t k) { made[k] = mesh_face(model, live[k], h, opt.optimize, opt.nodes_only, edge_and_model_nodes, g); },
+      [&](std::size_t k) { made[k] = mesh_face(model, live[k], face_h[live[k]], opt.optimize, opt.nodes_only, edge_and_model_nodes, g); },
       [&](std::size_t k) {
-        commit_face(live[k], h, made[k], g);
+        commit_face(live[k], face_h[live[k]], made[k], g);
         made[k] = {};
         g.triangles += static_cast<std::int64_t>(g.face_tris[live[k]].size());
         if (opt.progress && !opt.progress(static_cast<double>(k + 1) / static_cast<double>(live.size()))) throw Cancelled();

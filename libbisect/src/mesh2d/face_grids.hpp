@@ -23,6 +23,10 @@ namespace bisect::mesh2d {
 struct FaceGridOptions {
   std::int64_t elements = 0;  // triangles over all live faces (counted within ~15% by calibration)
   double size = 0;            // the spacing h itself; when > 0 it is used and `elements` ignored
+  // per model face (empty: none): a spacing of its own where > 0 and below h (the faces of a
+  // thin cell, size/cell_walls.hpp); an edge takes the smallest of its faces', a node of its
+  // edges'. Not counted by the `elements` calibration, which is h's.
+  std::vector<double> face_size;
   bool optimize = true;       // swaps and smoothing (4.4) on each face, boundary nodes fixed
   bool nodes_only = false;    // place the nodes only, no triangles (to count them cheaply)
   int threads = 1;             // faces meshed at once (0: one per core); the grids are the same for any

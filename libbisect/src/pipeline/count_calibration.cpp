@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "pipeline/cell_filling.hpp"
+#include "size/cell_walls.hpp"
+#include "size/size_field.hpp"
 
 namespace bisect::pipeline {
 namespace {
@@ -22,11 +24,12 @@ double predict_tets(const NodeTally& n, double scale) { return scale * (6.2 * n.
 // bisection in log Np once two spacings bracket the count (on small models the count jumps with
 // the segments per edge and the shrinking layers, so it may not be met exactly). Only the nodes
 // are placed (a fraction of a filling).
-double search_spacing(const Decomposition& d, double start, double want, double scale, int threads, double grading, GenerateStats& st) {
+double search_spacing(const Decomposition& d, const std::vector<double>& cap, double start, double want, double scale, int threads, double grading,
+                      GenerateStats& st) {
   double lo = 0, hi = 0, trial = start, best = start, best_miss = 1e300, last_predicted = -1, last_trial = 0;
   int futile = 0;  // coarser trials in a row that did not lower the count
   for (int round = 0; round < 10; ++round) {
-    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, threads, grading, &st.gen_nodes, true)), scale);
+    const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, cap, threads, grading, &st.gen_nodes, true)), scale);
     const double miss = std::abs(predicted - want);
     if (miss < best_miss) best_miss = miss, best = trial;
     if (miss <= 0.02 * want) break;
@@ -55,11 +58,14 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
   const double target = static_cast<double>(want);
   const int threads = opt.threads;
   const double grading = opt.sizing.grading;
+  // the cells' caps: kWallSizeFactor times their walls' thickness
+  std::vector<double> cap = size::cell_wall_thickness(d);
+  for (double& c : cap) c *= size::kWallSizeFactor;
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
-    const double spacing = size > 0 ? size : search_spacing(d, np, target, scale, threads, grading, st);
+    const double spacing = size > 0 ? size : search_spacing(d, cap, np, target, scale, threads, grading, st);
     if (last > 0 && std::abs(spacing / last - 1) < 1e-3) break;  // nothing new to try
     last = spacing;
-    Built again = place_nodes(d, spacing, threads, grading, &st.gen_nodes);
+    Built again = place_nodes(d, spacing, cap, threads, grading, &st.gen_nodes);
     fill_cells(d, again, opt.delaunay_insertion, threads, fill_progress, &st.gen_tets);
     ++out.fillings;
     const double count = static_cast<double>(again.tets.size());
@@ -75,9 +81,18 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
     double scratch = 0;
     double reach = 0;  // at least half the model's diameter
     for (const Vec3& p : d.model.nodes) reach = std::max(reach, (p - d.model.nodes.front()).norm());
-    const Built coarsest = place_nodes(d, 2 * reach, threads, grading, &scratch, true);
-    out.count_floor = std::llround(predict_tets(tally_nodes(d.model, coarsest), scale));
+    const Built coarsest = place_nodes(d, 2 * reach, cap, threads, grading, &scratch, true);
+    const double floor = predict_tets(tally_nodes(d.model, coarsest), scale);
+    out.count_floor = std::llround(floor);
+    // the walls' doing when they raise that count by more than a tenth (else the facets')
+    const Built uncapped = place_nodes(d, 2 * reach, {}, threads, grading, &scratch, true);
+    out.floor_by_walls = floor > 1.1 * predict_tets(tally_nodes(d.model, uncapped), scale);
   }
+  for (std::size_t c = 0; c < cap.size(); ++c)
+    if (cap[c] > 0 && (cap[c] < out.spacing || out.floor_by_walls)) {  // at the floor every wall caps
+      const double wall = cap[c] / size::kWallSizeFactor;
+      out.thinnest_wall = out.thinnest_wall > 0 ? std::min(out.thinnest_wall, wall) : wall;
+    }
   return out;
 }
 

@@ -5,7 +5,9 @@
 // the boundary's share falls with the size). The cells are then filled; when the count misses
 // R by more than 5%, the filling's own ratio corrects the prediction and the cells are filled
 // again (at most three fillings; the closest count wins). When R is out of reach by more than
-// 20%, the count the input's own nodes and edges allow is reported as the floor.
+// 20%, the count the input's own nodes and edges allow is reported as the floor. Cells in thin
+// walls (size/cell_walls.hpp) keep their spacing at kWallSizeFactor times the wall's thickness
+// whatever R asks, which the floor then includes.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -20,6 +22,8 @@ struct Calibrated {
   double spacing = 0;      // the Np it used
   std::int64_t fillings = 0;
   std::int64_t count_floor = 0;  // 0 unless R was missed by more than 20%
+  double thinnest_wall = 0;      // the thinnest cell wall that capped a cell's spacing (0: none)
+  bool floor_by_walls = false;   // the walls' caps, not the input's facets, set count_floor
 };
 
 // Fills the cells of d at the spacing `size` when > 0, else at the spacing whose count comes

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <unordered_set>
 
@@ -71,7 +72,15 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   pipeline::Built& b = cal.built;
   st.fillings = cal.fillings;
   st.count_floor = cal.count_floor;
-  if (st.count_floor > 0) st.count_floor_reason = "facets";  // the input's own nodes and edges
+  if (st.count_floor > 0) {
+    if (cal.floor_by_walls) {  // cells' walls kept their spacing below R's
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", cal.thinnest_wall);
+      st.count_floor_reason = std::string("thickness: walls down to ") + text + " thick, elements no larger across them";
+    } else {
+      st.count_floor_reason = "facets";  // the input's own nodes and edges
+    }
+  }
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
   st.refilled_cells = b.refilled_cells;
   st.graded_nodes = b.graded_nodes;

@@ -29,13 +29,22 @@ nodes::Polytope cell_polytope(const PolyhedralModel& m, const ConvexCell& c) {
   return p;
 }
 
-Built place_nodes(const Decomposition& d, double np, int threads, double grading, double* gen_nodes, bool count_only) {
+Built place_nodes(const Decomposition& d, double np, const std::vector<double>& cap, int threads, double grading, double* gen_nodes,
+                  bool count_only) {
   Built b;
   const auto t0 = std::chrono::steady_clock::now();
   mesh2d::FaceGridOptions fo;
   fo.size = np;
   fo.nodes_only = count_only;
   fo.threads = threads;
+  // each cell's spacing: np, or its cap where that is finer; a face takes its cells' finest
+  std::vector<double> cell_np(d.cells.size(), np);
+  for (std::size_t c = 0; c < d.cells.size() && c < cap.size(); ++c)
+    if (cap[c] > 0 && cap[c] < np) {
+      cell_np[c] = cap[c];
+      fo.face_size.resize(d.model.faces.size(), 0.0);
+      for (Index f : d.cells[c].faces) fo.face_size[f] = fo.face_size[f] > 0 ? std::min(fo.face_size[f], cap[c]) : cap[c];
+    }
   b.grids = mesh2d::mesh_faces(d.model, fo);
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
@@ -43,7 +52,7 @@ Built place_nodes(const Decomposition& d, double np, int threads, double grading
   std::vector<std::vector<Vec3>> uniform;
   for (std::size_t c = 0; c < d.cells.size(); ++c) {
     b.polys.push_back(cell_polytope(d.model, d.cells[c]));
-    uniform.push_back(nodes::shrink_cell_nodes(b.polys.back(), np));
+    uniform.push_back(nodes::shrink_cell_nodes(b.polys.back(), cell_np[c]));
   }
   // graded from the boundary's fine spacing (short edges); the shrinking's alone elsewhere
   nodes::GradedNodeStats gs;

@@ -30,9 +30,11 @@ struct Built {
 // outside, with outward planes.
 nodes::Polytope cell_polytope(const PolyhedralModel& m, const ConvexCell& c);
 
-// Face grids and interior nodes at spacing np. `count_only`: the faces' nodes without their
-// triangles, enough to count them. Adds its time to *gen_nodes.
-Built place_nodes(const Decomposition& d, double np, int threads, double grading, double* gen_nodes, bool count_only = false);
+// Face grids and interior nodes at spacing np; a cell whose cap (per cell, 0 for none: the
+// walls', size/cell_walls.hpp) is below np at its cap, its faces' grids too. `count_only`: the
+// faces' nodes without their triangles, enough to count them. Adds its time to *gen_nodes.
+Built place_nodes(const Decomposition& d, double np, const std::vector<double>& cap, int threads, double grading, double* gen_nodes,
+                  bool count_only = false);
 
 // The nodes that tetrahedra will use, on the mesh's boundary and interfaces (the input faces)
 // and elsewhere (inside the cells and on the cut faces, which the mesh does not keep as faces).

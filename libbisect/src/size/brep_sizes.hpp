@@ -24,14 +24,6 @@ struct BrepSizeReport {
 // bound is set: an arc of angle 2 pi / elements, or the chord whose sagitta is the deviation.
 double curvature_size(double kappa, const SizeOptions& o, double none);
 
-// Elements no larger than this many times the wall's thickness where they stand. Uncapped, a
-// 1 mm tube wall (FreeCAD's constraint_transform_torque) had 6 to 12% of its tetrahedra under 10
-// degrees at spacings 1.2 to 1.7, a 50 x 20 x 1 plate a quarter at 1.1 to 1.5. The cap's field
-// is not uniform (sources a third of a thickness apart, grown by the grading between them), and
-// 1.0 and 0.9 still left some of these shapes' cells with a third of their tetrahedra under 10
-// degrees; 0.8 left none in the shapes measured (plate, tube, two bonded plates, a 1 mm disc).
-inline constexpr double kWallSizeFactor = 0.8;
-
 // base: the spacing from R or the size (already clamped by max_size). walls: the thickness
 // samples (wall_thickness.hpp), null for none. Checks the options (InputError naming the option).
 SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o,
