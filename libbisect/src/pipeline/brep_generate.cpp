@@ -131,13 +131,14 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     // the count search's coarser rounds (kWallSizeFactor: elements no larger than a wall is thick)
     const std::vector<size::WallSample> walls =
         use_walls ? size::wall_thickness(in, dc.proxy.tess, 4 * np / size::kWallSizeFactor) : std::vector<size::WallSample>{};
+    size::SizeSamplingCache sampling;  // the geometry's samples, evaluated once for every round below
     double best_miss = 1e300;
     for (int filling = 0; filling < 2; ++filling) {
       pipeline::BrepPlacement placed;
       double placed_miss = 1e300, placed_np = np, last_predicted = 0, last_np = 0;
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
-        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls);
+        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls, &sampling);
         pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads);
         st.gen_nodes += since(t_nodes);
         if (progress && !progress(0.35)) throw Cancelled();

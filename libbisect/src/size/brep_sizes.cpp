@@ -50,8 +50,15 @@ double curvature_size(double kappa, const SizeOptions& o, double none) {
 }
 
 SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o, BrepSizeReport* report,
-                          const std::vector<WallSample>* walls) {
+                          const std::vector<WallSample>* walls, SizeSamplingCache* cache) {
   check_options(in, o);
+  SizeSamplingCache own_cache;
+  SizeSamplingCache& kept = cache ? *cache : own_cache;
+  if (kept.triangles.size() != tess.faces.size()) {
+    kept.triangles.assign(tess.faces.size(), {});
+    for (std::size_t f = 0; f < tess.faces.size(); ++f) kept.triangles[f].resize(tess.faces[f].tris.size());
+  }
+  if (kept.edges.size() != in.edges.size()) kept.edges.assign(in.edges.size(), {});
   BrepSizeReport rep;
   // A floor under every size even without min_size: a cone's apex or a pole has unbounded
   // curvature, and the curvature bound would ask for ever smaller elements towards it. A
@@ -84,34 +91,46 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
     if (!curved && face_region[f] <= 0) continue;
     for (std::size_t t = 0; t < tf.tris.size(); ++t) {
       const auto& uv = tf.uv[t];
+      SizeSamplingCache::Triangle& tri = kept.triangles[f][t];
+      const Vec2 centre = (uv[0] + uv[1] + uv[2]) / 3;
+      if (!tri.probed) {
+        const Vec2 probes[4] = {uv[0], uv[1], uv[2], centre};
+        for (int i = 0; i < 4; ++i) tri.kappa[i] = curved ? face.surface->max_curvature(probes[i]) : 0.0;
+        for (int i = 0; i < 3; ++i) tri.longest = std::max(tri.longest, (face.surface->point(uv[i]) - face.surface->point(uv[(i + 1) % 3])).norm());
+        tri.probed = true;
+      }
       // samples no farther apart than half the finest size the triangle asks for at its corners
       // and centre: a cylinder's tessellation runs its whole length in one triangle (a rod 200
       // long: four samples along it let the size grow to the spacing between them, and the
       // middle got 8 elements per turn where 12 were asked)
       int k = kSubdivide;
       {
-        double finest = face_region[f] > 0 ? face_region[f] : field.base(), longest = 0;
-        const Vec2 centre = (uv[0] + uv[1] + uv[2]) / 3;
+        double finest = face_region[f] > 0 ? face_region[f] : field.base();
         if (curved)
-          for (const Vec2& q : {uv[0], uv[1], uv[2], centre})
-            finest = std::min(finest, curvature_size(face.surface->max_curvature(q), o, field.base()));
-        for (int i = 0; i < 3; ++i)
-          longest = std::max(longest, (face.surface->point(uv[i]) - face.surface->point(uv[(i + 1) % 3])).norm());
-        if (finest > 0) k = static_cast<int>(std::clamp(std::ceil(2 * longest / finest), static_cast<double>(kSubdivide), 256.0));
+          for (double kappa : tri.kappa) finest = std::min(finest, curvature_size(kappa, o, field.base()));
+        if (finest > 0) k = static_cast<int>(std::clamp(std::ceil(2 * tri.longest / finest), static_cast<double>(kSubdivide), 256.0));
       }
-      for (int i = 0; i <= k; ++i)
-        for (int j = 0; i + j <= k; ++j) {
-          const double a = static_cast<double>(i) / k, b = static_cast<double>(j) / k;
-          const Vec2 q = (1 - a - b) * uv[0] + a * uv[1] + b * uv[2];
-          const Vec3 x = face.surface->point(q);
-          if (face_region[f] > 0) add(x, face_region[f], &rep.region_sources);
-          if (!curved) continue;
-          const double s = curvature_size(face.surface->max_curvature(q), o, field.base());
-          if (s < field.base()) {
-            add(x, s, &rep.curvature_sources);
-            rep.smallest_curvature_size = std::max(floor, rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s);
+      SizeSamplingCache::Samples& at = tri.samples;
+      if (at.k != k) {
+        at.k = k, at.x.clear(), at.kappa.clear();
+        for (int i = 0; i <= k; ++i)
+          for (int j = 0; i + j <= k; ++j) {
+            const double a = static_cast<double>(i) / k, b = static_cast<double>(j) / k;
+            const Vec2 q = (1 - a - b) * uv[0] + a * uv[1] + b * uv[2];
+            at.x.push_back(face.surface->point(q));
+            if (curved) at.kappa.push_back(face.surface->max_curvature(q));
           }
+      }
+      for (std::size_t n = 0; n < at.x.size(); ++n) {
+        const Vec3& x = at.x[n];
+        if (face_region[f] > 0) add(x, face_region[f], &rep.region_sources);
+        if (!curved) continue;
+        const double s = curvature_size(at.kappa[n], o, field.base());
+        if (s < field.base()) {
+          add(x, s, &rep.curvature_sources);
+          rep.smallest_curvature_size = std::max(floor, rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s);
         }
+      }
     }
   }
   // edges: curvature along the curve, the edge's own length when it is shorter than the base
@@ -121,27 +140,39 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
     if (edge.degenerate || !edge.curve) continue;
     const ParametricCurve& c = *edge.curve;
     constexpr int kProbe = 32;
-    double length = 0;
-    Vec3 prev = c.point(c.t_min());
-    for (int i = 1; i <= kProbe; ++i) {
-      const Vec3 cur = c.point(c.t_min() + (c.t_max() - c.t_min()) * i / kProbe);
-      length += (cur - prev).norm();
-      prev = cur;
+    SizeSamplingCache::Edge& kept_edge = kept.edges[e];
+    auto param = [&](int i, int n) { return c.t_min() + (c.t_max() - c.t_min()) * i / n; };
+    if (!kept_edge.probed) {
+      Vec3 prev = c.point(c.t_min());
+      for (int i = 1; i <= kProbe; ++i) {
+        const Vec3 cur = c.point(param(i, kProbe));
+        kept_edge.length += (cur - prev).norm();
+        prev = cur;
+      }
+      for (int i = 0; i <= kProbe; ++i) kept_edge.probe_kappa.push_back(c.curvature(param(i, kProbe)));
+      kept_edge.probed = true;
     }
+    const double length = kept_edge.length;
     if (!(length > 0)) continue;
     const double own = length < field.base() ? length : field.base();
     if (own < field.base()) rep.smallest_edge = rep.smallest_edge > 0 ? std::min(rep.smallest_edge, length) : length;
     // sample spacing: a quarter of the smallest size met along a coarse probe
     double finest = std::min(own, edge_region[e] > 0 ? edge_region[e] : field.base());
-    for (int i = 0; i <= kProbe; ++i)
-      finest = std::min(finest, curvature_size(c.curvature(c.t_min() + (c.t_max() - c.t_min()) * i / kProbe), o, field.base()));
+    for (double kappa : kept_edge.probe_kappa) finest = std::min(finest, curvature_size(kappa, o, field.base()));
     const int n = static_cast<int>(std::clamp(std::ceil(4 * length / finest), 2.0, 20000.0));
+    SizeSamplingCache::Samples& at = kept_edge.samples;
+    if (at.k != n) {
+      at.k = n, at.x.clear(), at.kappa.clear();
+      for (int i = 0; i <= n; ++i) {
+        at.x.push_back(c.point(param(i, n)));
+        at.kappa.push_back(c.curvature(param(i, n)));
+      }
+    }
     for (int i = 0; i <= n; ++i) {
-      const double t = c.t_min() + (c.t_max() - c.t_min()) * i / n;
-      const Vec3 x = c.point(t);
+      const Vec3& x = at.x[i];
       add(x, own, &rep.edge_sources);
       if (edge_region[e] > 0) add(x, edge_region[e], &rep.region_sources);
-      const double s = curvature_size(c.curvature(t), o, field.base());
+      const double s = curvature_size(at.kappa[i], o, field.base());
       if (s < field.base()) {
         add(x, s, &rep.curvature_sources);
         rep.smallest_curvature_size = std::max(floor, rep.smallest_curvature_size > 0 ? std::min(rep.smallest_curvature_size, s) : s);

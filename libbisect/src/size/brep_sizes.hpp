@@ -24,9 +24,37 @@ struct BrepSizeReport {
 // bound is set: an arc of angle 2 pi / elements, or the chord whose sagitta is the deviation.
 double curvature_size(double kappa, const SizeOptions& o, double none);
 
+// What brep_size_field evaluates on the true geometry, kept between the count search's rounds
+// over one tessellation: a triangle's or an edge's samples lie at the same parameters for every
+// base spacing coarser than its curvature asks for, and evaluating B-spline surfaces there was
+// most of the search's time (x_as1_tu_203: B-spline derivatives 45% of 49 s, every round again).
+struct SizeSamplingCache {
+  struct Samples {
+    int k = -1;                // the subdivision (triangle) or the segment count (edge) they are for
+    std::vector<Vec3> x;       // the points
+    std::vector<double> kappa;  // the curvature there (empty where none is asked)
+  };
+  struct Triangle {
+    bool probed = false;
+    double kappa[4] = {0, 0, 0, 0};  // at the corners and the centre
+    double longest = 0;              // its longest side in 3D
+    Samples samples;
+  };
+  struct Edge {
+    bool probed = false;
+    double length = 0;
+    std::vector<double> probe_kappa;  // at 33 equal parameter steps
+    Samples samples;
+  };
+  std::vector<std::vector<Triangle>> triangles;  // per face, per tessellation triangle
+  std::vector<Edge> edges;
+};
+
 // base: the spacing from R or the size (already clamped by max_size). walls: the thickness
-// samples (wall_thickness.hpp), null for none. Checks the options (InputError naming the option).
+// samples (wall_thickness.hpp), null for none. cache: the samples of earlier calls on the same
+// input and tessellation (null: none kept). Checks the options (InputError naming the option).
 SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o,
-                          BrepSizeReport* report = nullptr, const std::vector<WallSample>* walls = nullptr);
+                          BrepSizeReport* report = nullptr, const std::vector<WallSample>* walls = nullptr,
+                          SizeSamplingCache* cache = nullptr);
 
 }  // namespace bisect::size
