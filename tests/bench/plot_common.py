@@ -17,10 +17,11 @@ def fit(xs, ys):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
 
 
-def finish(fig, axes, dst):
-    """Log grids and legends on every axes, then the figure written to dst (PNG, 100 dpi)."""
+def finish(fig, axes, dst, legend_size=None):
+    """Log grids and legends (font size legend_size, or matplotlib's) on every axes, then the
+    figure written to dst (PNG, 100 dpi)."""
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
+        ax.legend(fontsize=legend_size)
     fig.tight_layout()
     fig.savefig(dst, dpi=100)

@@ -2,7 +2,7 @@
 import csv
 import sys
 
-from plot_common import fit, plt
+from plot_common import finish, fit, plt
 
 
 def main(src, dst):
@@ -18,10 +18,7 @@ def main(src, dst):
     ax.set_xlabel("faces")
     ax.set_ylabel("seconds")
     ax.set_title("BisectMesh convex decomposition (thesis 6.10 families)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(dst, dpi=100)
+    finish(fig, [ax], dst, legend_size=8)
 
 
 if __name__ == "__main__":
