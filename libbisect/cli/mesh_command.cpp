@@ -108,6 +108,8 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.sizing.curvature_elements = opt.curvature_elements;
     go.sizing.chord_deviation = opt.chord_deviation;
     go.sizing.size_grading = opt.size_grading;
+    // what the walls and features make, checked again once the nodes are placed
+    go.max_elements = tets_within(opt.max_memory_mb, opt.order, &go.limit_cause);
     GenerateStats st;
     // a B-rep (.brep, .step, .iges) goes the true-surface route, a polyhedral input the thesis's
     TetMesh mesh;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -66,6 +67,15 @@ double default_memory_limit_mb() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || page <= 0) return 0;
   return static_cast<double>(pages) * static_cast<double>(page) / (1024.0 * 1024.0) / 2;
+}
+
+double tets_within(double limit_mb, int order, std::string* cause) {
+  const bool by_default = limit_mb <= 0;
+  if (by_default) limit_mb = default_memory_limit_mb();
+  if (limit_mb <= 0) return 0;
+  *cause = "the memory limit of " + amount(limit_mb) +
+           (by_default ? " (half of the physical memory; --max-memory MB sets another)" : " set by --max-memory");
+  return std::max(0.0, limit_mb - kBaseMegabytes) * 1024.0 * 1024.0 / (order == 2 ? kBytesPerTet10 : kBytesPerTet);
 }
 
 void check_memory(const WorkEstimate& e, double limit_mb) {

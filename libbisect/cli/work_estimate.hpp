@@ -26,6 +26,10 @@ WorkEstimate estimate_planar_mesh(std::int64_t elements, std::string cause);
 // system does not say.
 double default_memory_limit_mb();
 
+// The tetrahedra (of order 1 or 2) that fit in `limit_mb` (0: default_memory_limit_mb()), and in
+// *cause the setting that says so, for GenerateOptions::max_elements; 0 when no limit is known.
+double tets_within(double limit_mb, int order, std::string* cause);
+
 // Throws InputError when the estimate exceeds `limit_mb` (0: default_memory_limit_mb()), naming
 // the cause, the estimate and --max-memory.
 void check_memory(const WorkEstimate& e, double limit_mb);

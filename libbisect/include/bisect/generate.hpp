@@ -76,6 +76,12 @@ struct GenerateOptions {
   // for every count, and the progress callback is called on the calling thread only
   int threads = 0;
   std::function<bool(double)> progress;  // fraction done; return false to cancel
+  // A job whose nodes, once placed, predict more tetrahedra than this is refused (InputError)
+  // before any cell is filled: thin walls and small features keep elements small whatever R
+  // asks (a 1000 x 1000 x 1 sheet at R = 10^4 would make some 1.6 * 10^7). 0: no bound. The
+  // CLI sets it from its memory limit (--max-memory); `limit_cause` names that setting.
+  double max_elements = 0;
+  std::string limit_cause;
 };
 
 struct GenerateStats {

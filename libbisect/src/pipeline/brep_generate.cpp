@@ -21,6 +21,7 @@
 #include "pipeline/brep_order2.hpp"
 #include "pipeline/brep_proxy.hpp"
 #include "pipeline/cell_filling.hpp"
+#include "pipeline/count_calibration.hpp"
 #include "pipeline/node_placement.hpp"
 #include "size/brep_sizes.hpp"
 
@@ -155,6 +156,16 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
         np = next;
       }
       np = placed_np;
+      if (opt.max_elements > 0) {  // refused before the filling, where the memory goes
+        const double predicted = scale * (6.2 * static_cast<double>(placed.inside_nodes()) + 2.65 * static_cast<double>(placed.boundary_nodes()));
+        char why[128] = "";
+        if (sizes.thinnest_wall > 0)
+          std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", sizes.thinnest_wall,
+                        size::kWallSizeFactor * sizes.thinnest_wall);
+        else if (sizes.smallest_edge > 0)
+          std::snprintf(why, sizeof why, "B-rep edges down to %.3g long", sizes.smallest_edge);
+        pipeline::check_element_bound(predicted, opt, in.source, why);
+      }
       const auto t_fill = Clock::now();
       std::function<bool(double)> fill_progress;
       if (progress) fill_progress = [&](double x) { return progress(0.35 + 0.45 * x); };

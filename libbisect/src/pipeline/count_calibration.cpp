@@ -1,7 +1,9 @@
 #include "pipeline/count_calibration.hpp"
 
 #include <cmath>
+#include <cstdio>
 
+#include "bisect/errors.hpp"
 #include "pipeline/cell_filling.hpp"
 #include "size/cell_walls.hpp"
 #include "size/size_field.hpp"
@@ -25,13 +27,13 @@ double predict_tets(const NodeTally& n, double scale) { return scale * (6.2 * n.
 // the segments per edge and the shrinking layers, so it may not be met exactly). Only the nodes
 // are placed (a fraction of a filling).
 double search_spacing(const Decomposition& d, const std::vector<double>& cap, double start, double want, double scale, int threads, double grading,
-                      GenerateStats& st) {
+                      GenerateStats& st, double* best_predicted) {
   double lo = 0, hi = 0, trial = start, best = start, best_miss = 1e300, last_predicted = -1, last_trial = 0;
   int futile = 0;  // coarser trials in a row that did not lower the count
   for (int round = 0; round < 10; ++round) {
     const double predicted = predict_tets(tally_nodes(d.model, place_nodes(d, trial, cap, threads, grading, &st.gen_nodes, true)), scale);
     const double miss = std::abs(predicted - want);
-    if (miss < best_miss) best_miss = miss, best = trial;
+    if (miss < best_miss) best_miss = miss, best = trial, *best_predicted = predicted;
     if (miss <= 0.02 * want) break;
     // Coarser spacings that give as many or more tetrahedra twice running: the count is held up
     // by the boundary (--grading grades from every boundary node finer than Np, and a coarser Np
@@ -51,6 +53,13 @@ double search_spacing(const Decomposition& d, const std::vector<double>& cap, do
 
 }  // namespace
 
+void check_element_bound(double predicted, const GenerateOptions& opt, const std::string& source, const std::string& why, const char* by) {
+  if (!(opt.max_elements > 0) || predicted <= opt.max_elements) return;
+  char text[200];
+  std::snprintf(text, sizeof text, "%s predict about %.3g tetrahedra, over the limit of %.3g", by, predicted, opt.max_elements);
+  throw InputError(source + ": " + text + (why.empty() ? "" : " (" + why + ")") + (opt.limit_cause.empty() ? "" : "; " + opt.limit_cause));
+}
+
 Calibrated fill_to_count(const Decomposition& d, double start, double size, std::int64_t want, const GenerateOptions& opt,
                          const std::function<bool(double)>& fill_progress, GenerateStats& st) {
   Calibrated out;
@@ -61,10 +70,36 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
   // the cells' caps: kWallSizeFactor times their walls' thickness
   std::vector<double> cap = size::cell_wall_thickness(d);
   for (double& c : cap) c *= size::kWallSizeFactor;
+  // a first, cheap bound before any node is placed (the search below places them at every trial,
+  // which for a thin sheet of 1000 x 1000 x 1 at R = 10^4 ran for minutes): each cell's nominal
+  // count 8 V / h^3 at the start spacing or its cap
+  if (opt.max_elements > 0) {
+    double nominal = 0, thinnest = 0;
+    for (std::size_t c = 0; c < d.cells.size(); ++c) {
+      const double h = cap[c] > 0 ? std::min(start, cap[c]) : start;
+      nominal += 8 * cell_polytope(d.model, d.cells[c]).volume() / (h * h * h);
+      if (cap[c] > 0 && cap[c] < start) thinnest = thinnest > 0 ? std::min(thinnest, cap[c]) : cap[c];
+    }
+    char why[96] = "";
+    if (thinnest > 0)
+      std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
+    if (thinnest > 0) check_element_bound(nominal, opt, d.model.source, why, "the cells' volumes at their spacings");
+  }
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
-    const double spacing = size > 0 ? size : search_spacing(d, cap, np, target, scale, threads, grading, st);
+    double predicted = 0;
+    const double spacing = size > 0 ? size : search_spacing(d, cap, np, target, scale, threads, grading, st, &predicted);
     if (last > 0 && std::abs(spacing / last - 1) < 1e-3) break;  // nothing new to try
     last = spacing;
+    if (opt.max_elements > 0) {  // refused before the filling, where the memory goes
+      if (size > 0) predicted = predict_tets(tally_nodes(d.model, place_nodes(d, spacing, cap, threads, grading, &st.gen_nodes, true)), scale);
+      double thinnest = 0;
+      for (double c : cap)
+        if (c > 0 && c < spacing) thinnest = thinnest > 0 ? std::min(thinnest, c) : c;
+      char why[96] = "";
+      if (thinnest > 0)
+        std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
+      check_element_bound(predicted, opt, d.model.source, why, "the nodes placed");
+    }
     Built again = place_nodes(d, spacing, cap, threads, grading, &st.gen_nodes);
     fill_cells(d, again, opt.delaunay_insertion, threads, fill_progress, &st.gen_tets);
     ++out.fillings;

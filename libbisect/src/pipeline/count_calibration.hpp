@@ -11,6 +11,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "bisect/generate.hpp"
 #include "pipeline/node_placement.hpp"
@@ -25,6 +26,12 @@ struct Calibrated {
   double thinnest_wall = 0;      // the thinnest cell wall that capped a cell's spacing (0: none)
   bool floor_by_walls = false;   // the walls' caps, not the input's facets, set count_floor
 };
+
+// Throws InputError when `predicted` tetrahedra exceed opt.max_elements (when set), naming
+// `source`, what predicted them (`by`), what keeps the elements small (`why`, may be empty) and
+// opt.limit_cause.
+void check_element_bound(double predicted, const GenerateOptions& opt, const std::string& source, const std::string& why,
+                         const char* by = "the nodes placed");
 
 // Fills the cells of d at the spacing `size` when > 0, else at the spacing whose count comes
 // nearest `want`, starting the search from `start`. fill_progress(fraction of one filling's

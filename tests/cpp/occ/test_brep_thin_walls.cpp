@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "bisect/occ.hpp"
 #include "bisect/quality.hpp"
@@ -120,6 +121,29 @@ TEST(BrepThinWalls, ABadlyStarredCellIsFilledAgain) {
   const QualitySummary q = summarize_quality(element_quality(m));
   EXPECT_GE(q.dihedral_min.min, 10.0);
   EXPECT_EQ(q.pct_dihedral_below_10, 0.0);
+}
+
+}  // namespace
+}  // namespace bisect
+
+namespace bisect {
+namespace {
+
+TEST(BrepThinWalls, AnElementBoundRefusesWhatTheWallsWouldMakeBeforeTheFill) {
+  // 100 x 100 x 1 at R = 500: the walls' cap asks for elements 0.8 across, some 10^5 of them
+  const BrepInput in = from_shape(BRepPrimAPI_MakeBox(100, 100, 1).Shape(), "sheet");
+  GenerateOptions opt;
+  opt.sizing.elements = 500;
+  opt.max_elements = 20000;
+  opt.limit_cause = "a test's limit";
+  try {
+    generate_brep_mesh(in, opt);
+    FAIL() << "meshed past the bound";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("sheet: the nodes placed predict about"), std::string::npos) << what;
+    EXPECT_NE(what.find("over the limit of 2e+04 (walls down to 1 thick get elements no larger than 0.8); a test's limit"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
