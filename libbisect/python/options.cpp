@@ -93,6 +93,7 @@ py::dict default_options() {
   d["chord_deviation"] = o.sizing.chord_deviation;
   d["size_grading"] = o.sizing.size_grading;
   d["regions"] = py::list();
+  d["max_elements"] = o.max_elements;
   return d;
 }
 
@@ -122,6 +123,10 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "curvature_elements") o.sizing.curvature_elements = number(value, "curvature_elements");
     else if (k == "chord_deviation") o.sizing.chord_deviation = number(value, "chord_deviation");
     else if (k == "size_grading") o.sizing.size_grading = number(value, "size_grading");
+    else if (k == "max_elements") {  // thin walls and small features past this many: refused before the fill
+      o.max_elements = number(value, "max_elements");
+      o.limit_cause = "max_elements (mesh_shape: what half of this machine's memory holds)";
+    }
     else if (k == "regions") {
       if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))
         throw py::type_error("regions must be a list of dicts {size, faces, edges, vertices, solids} (got " + show(value) + ")");

@@ -116,6 +116,16 @@ class ShapeMesherTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             shape_mesher.mesh_shape(Part.makeBox(1, 1, 1).Faces[0], elements=100)  # no solid
 
+    def test_thin_walls_are_bounded(self):
+        # a 100 x 100 x 1 sheet at 500 elements: the walls' cap asks for some 10^5 tetrahedra,
+        # over a bound of 20,000; refused before any cell is filled, naming the walls
+        with self.assertRaises(ValueError) as caught:
+            shape_mesher.mesh_shape(Part.makeBox(100, 100, 1), elements=500, max_elements=20000)
+        self.assertIn("walls down to 1 thick get elements no larger than 0.8", str(caught.exception))
+        self.assertIn("max_elements", str(caught.exception))
+        # by default the bound is what half of the memory holds: far above this sheet at 500
+        self.assertGreater(shape_mesher.arguments.element_limit(), 1e5)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -133,6 +133,14 @@ def physical_memory():
         return None
 
 
+def element_limit():
+    """The tetrahedra half of the physical memory holds (BYTES_PER_ELEMENT each), 0 where the
+    system does not say: the core refuses, before filling its cells, a mesh whose thin walls or
+    small features would make more than that whatever ``elements`` asks."""
+    memory = physical_memory()
+    return 0.0 if memory is None else float(memory // 2) / BYTES_PER_ELEMENT
+
+
 def check_workload(elements, volume, size, max_size=None):
     """ValueError, naming ``elements``, ``size`` or ``max_size``, when the request would take more
     than half of the physical memory (FreeCAD would be killed, or OpenCASCADE abort it, long

@@ -148,6 +148,8 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
     if not getattr(shape, "Solids", None) and not getattr(shape, "Shells", None):
         raise ValueError("the shape has no solid to mesh (%d faces, no closed shell)" % len(getattr(shape, "Faces", [])))
     arguments.check_workload(elements, abs(shape.Volume), size, options.get("max_size") or None)
+    if options.get("max_elements") is None:  # what thin walls make, checked by the core once its nodes are placed
+        options["max_elements"] = arguments.element_limit()
     # the core's share of the time is most of it; reading the file into FreeCAD takes the rest
     core_share = 0.85
 
