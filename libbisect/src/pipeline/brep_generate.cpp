@@ -31,6 +31,56 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// The tetrahedra the size field asks for over the cells, before any node is placed: the
+// nominal count 8 / h(x)^3 (thesis 6.11 with h varying) summed over a grid in each cell's box,
+// about 2 * 10^4 points in all shared by volume, at least 2 along each axis (a thin sheet's
+// thickness too), the points inside the cell counted. For the element bound: placing the nodes
+// of a 100 x 100 x 1 sheet at its walls' spacing took 5 s before the bound could refuse it.
+double field_count(const Decomposition& d, const size::SizeField& h) {
+  std::vector<nodes::Polytope> cells;
+  double total_volume = 0;
+  for (const ConvexCell& c : d.cells) {
+    cells.push_back(pipeline::cell_polytope(d.model, c));
+    total_volume += cells.back().volume();
+  }
+  if (!(total_volume > 0)) return 0;
+  double count = 0;
+  for (const nodes::Polytope& p : cells) {
+    if (p.v.empty()) continue;
+    Vec3 lo = p.v[0], hi = p.v[0];
+    for (const Vec3& v : p.v) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    const Vec3 extent = hi - lo;
+    const double box = extent.prod();
+    if (!(box > 0)) continue;
+    const double points = std::max(8.0, 2e4 * p.volume() / total_volume), unit = std::cbrt(box / points);
+    int n[3];
+    for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(std::clamp(std::ceil(extent[a] / unit), 2.0, 1000.0));
+    const double dv = box / (static_cast<double>(n[0]) * n[1] * n[2]);
+    for (int i = 0; i < n[0]; ++i)
+      for (int j = 0; j < n[1]; ++j)
+        for (int k = 0; k < n[2]; ++k) {
+          const Vec3 x = lo + extent.cwiseProduct(Vec3((i + 0.5) / n[0], (j + 0.5) / n[1], (k + 0.5) / n[2]));
+          bool inside = true;
+          for (std::size_t f = 0; f < p.normal.size() && inside; ++f) inside = p.normal[f].dot(x) <= p.offset[f];
+          if (!inside) continue;
+          const double s = h.at(x);
+          count += 8 * dv / (s * s * s);
+        }
+  }
+  return count;
+}
+
+// What keeps the elements smaller than R asks, for the element bound's message.
+std::string element_bound_why(const size::BrepSizeReport& sizes) {
+  char why[128] = "";
+  if (sizes.thinnest_wall > 0)
+    std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", sizes.thinnest_wall,
+                  size::kWallSizeFactor * sizes.thinnest_wall);
+  else if (sizes.smallest_edge > 0)
+    std::snprintf(why, sizeof why, "B-rep edges down to %.3g long", sizes.smallest_edge);
+  return why;
+}
+
 // The proxy's angular deflection: about twice the angle the curvature bound gives an element,
 // between 25 and 60 degrees. Coarser than the elements, so that a concave face's facets (each
 // its own cell side) are no narrower than an element; fine enough that a cell whose faces move
@@ -140,6 +190,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
         const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls, &sampling);
+        if (opt.max_elements > 0 && filling == 0 && round == 0 && h.smallest() < h.base())  // walls or features: bounded first
+          pipeline::check_element_bound(field_count(dc.d, h), opt, in.source, element_bound_why(sizes), "the size field's samples over the cells");
         pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads);
         st.gen_nodes += since(t_nodes);
         if (progress && !progress(0.35)) throw Cancelled();
@@ -158,13 +210,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       np = placed_np;
       if (opt.max_elements > 0) {  // refused before the filling, where the memory goes
         const double predicted = scale * (6.2 * static_cast<double>(placed.inside_nodes()) + 2.65 * static_cast<double>(placed.boundary_nodes()));
-        char why[128] = "";
-        if (sizes.thinnest_wall > 0)
-          std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", sizes.thinnest_wall,
-                        size::kWallSizeFactor * sizes.thinnest_wall);
-        else if (sizes.smallest_edge > 0)
-          std::snprintf(why, sizeof why, "B-rep edges down to %.3g long", sizes.smallest_edge);
-        pipeline::check_element_bound(predicted, opt, in.source, why);
+        pipeline::check_element_bound(predicted, opt, in.source, element_bound_why(sizes));
       }
       const auto t_fill = Clock::now();
       std::function<bool(double)> fill_progress;

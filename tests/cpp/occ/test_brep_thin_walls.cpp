@@ -130,7 +130,8 @@ namespace bisect {
 namespace {
 
 TEST(BrepThinWalls, AnElementBoundRefusesWhatTheWallsWouldMakeBeforeTheFill) {
-  // 100 x 100 x 1 at R = 500: the walls' cap asks for elements 0.8 across, some 10^5 of them
+  // 100 x 100 x 1 at R = 500: the walls' cap asks for elements 0.8 across, some 10^5 of them,
+  // refused from the size field before any node is placed
   const BrepInput in = from_shape(BRepPrimAPI_MakeBox(100, 100, 1).Shape(), "sheet");
   GenerateOptions opt;
   opt.sizing.elements = 500;
@@ -141,7 +142,7 @@ TEST(BrepThinWalls, AnElementBoundRefusesWhatTheWallsWouldMakeBeforeTheFill) {
     FAIL() << "meshed past the bound";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("sheet: the nodes placed predict about"), std::string::npos) << what;
+    EXPECT_NE(what.find("sheet: the size field's samples over the cells predict about"), std::string::npos) << what;
     EXPECT_NE(what.find("over the limit of 2e+04 (walls down to 1 thick get elements no larger than 0.8); a test's limit"), std::string::npos) << what;
   }
 }
