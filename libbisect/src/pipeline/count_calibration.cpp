@@ -51,6 +51,18 @@ double search_spacing(const Decomposition& d, const std::vector<double>& cap, do
   return best;
 }
 
+// For the element bound's message: the thinnest wall whose cap is below `spacing`, as "walls down
+// to T thick get elements no larger than 0.8 T"; empty when no cap is.
+std::string walls_below(const std::vector<double>& cap, double spacing) {
+  double thinnest = 0;
+  for (double c : cap)
+    if (c > 0 && c < spacing) thinnest = thinnest > 0 ? std::min(thinnest, c) : c;
+  if (!(thinnest > 0)) return "";
+  char why[96];
+  std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
+  return why;
+}
+
 }  // namespace
 
 void check_element_bound(double predicted, const GenerateOptions& opt, const std::string& source, const std::string& why, const char* by) {
@@ -74,16 +86,13 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
   // which for a thin sheet of 1000 x 1000 x 1 at R = 10^4 ran for minutes): each cell's nominal
   // count 8 V / h^3 at the start spacing or its cap
   if (opt.max_elements > 0) {
-    double nominal = 0, thinnest = 0;
+    double nominal = 0;
     for (std::size_t c = 0; c < d.cells.size(); ++c) {
       const double h = cap[c] > 0 ? std::min(start, cap[c]) : start;
       nominal += 8 * cell_polytope(d.model, d.cells[c]).volume() / (h * h * h);
-      if (cap[c] > 0 && cap[c] < start) thinnest = thinnest > 0 ? std::min(thinnest, cap[c]) : cap[c];
     }
-    char why[96] = "";
-    if (thinnest > 0)
-      std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
-    if (thinnest > 0) check_element_bound(nominal, opt, d.model.source, why, "the cells' volumes at their spacings");
+    const std::string why = walls_below(cap, start);
+    if (!why.empty()) check_element_bound(nominal, opt, d.model.source, why, "the cells' volumes at their spacings");
   }
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
     double predicted = 0;
@@ -92,13 +101,7 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
     last = spacing;
     if (opt.max_elements > 0) {  // refused before the filling, where the memory goes
       if (size > 0) predicted = predict_tets(tally_nodes(d.model, place_nodes(d, spacing, cap, threads, grading, &st.gen_nodes, true)), scale);
-      double thinnest = 0;
-      for (double c : cap)
-        if (c > 0 && c < spacing) thinnest = thinnest > 0 ? std::min(thinnest, c) : c;
-      char why[96] = "";
-      if (thinnest > 0)
-        std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
-      check_element_bound(predicted, opt, d.model.source, why, "the nodes placed");
+      check_element_bound(predicted, opt, d.model.source, walls_below(cap, spacing), "the nodes placed");
     }
     Built again = place_nodes(d, spacing, cap, threads, grading, &st.gen_nodes);
     fill_cells(d, again, opt.delaunay_insertion, threads, fill_progress, &st.gen_tets);
