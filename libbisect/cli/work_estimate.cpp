@@ -69,23 +69,37 @@ double default_memory_limit_mb() {
   return static_cast<double>(pages) * static_cast<double>(page) / (1024.0 * 1024.0) / 2;
 }
 
-double tets_within(double limit_mb, int order, std::string* cause) {
+namespace {
+
+// The limit in effect: --max-memory's MB, or half of the physical memory when none was given (0
+// when the system does not say either), and its words for a message ("1.2 GB set by --max-memory").
+struct Limit {
+  double mb = 0;
+  std::string words;
+};
+Limit memory_limit(double limit_mb) {
   const bool by_default = limit_mb <= 0;
-  if (by_default) limit_mb = default_memory_limit_mb();
-  if (limit_mb <= 0) return 0;
-  *cause = "the memory limit of " + amount(limit_mb) +
-           (by_default ? " (half of the physical memory; --max-memory MB sets another)" : " set by --max-memory");
-  return std::max(0.0, limit_mb - kBaseMegabytes) * 1024.0 * 1024.0 / (order == 2 ? kBytesPerTet10 : kBytesPerTet);
+  Limit l;
+  l.mb = by_default ? default_memory_limit_mb() : limit_mb;
+  if (l.mb > 0) l.words = amount(l.mb) + (by_default ? " (half of the physical memory; --max-memory MB sets another)" : " set by --max-memory");
+  return l;
+}
+
+}  // namespace
+
+double tets_within(double limit_mb, int order, std::string* cause) {
+  const Limit l = memory_limit(limit_mb);
+  if (l.mb <= 0) return 0;
+  *cause = "the memory limit of " + l.words;
+  return std::max(0.0, l.mb - kBaseMegabytes) * 1024.0 * 1024.0 / (order == 2 ? kBytesPerTet10 : kBytesPerTet);
 }
 
 void check_memory(const WorkEstimate& e, double limit_mb) {
-  const bool by_default = limit_mb <= 0;
-  if (by_default) limit_mb = default_memory_limit_mb();
-  if (limit_mb <= 0) return;  // the system does not say how much it has, and none was set
-  if (e.megabytes <= limit_mb) return;
+  const Limit l = memory_limit(limit_mb);
+  if (l.mb <= 0) return;  // the system does not say how much it has, and none was set
+  if (e.megabytes <= l.mb) return;
   throw InputError(e.cause + ": an estimated " + count(e.elements) + " " + e.element_name + " and " + count(e.nodes) +
-                   " nodes need about " + amount(e.megabytes) + " of memory, over the limit of " + amount(limit_mb) +
-                   (by_default ? " (half of the physical memory; --max-memory MB sets another)" : " set by --max-memory"));
+                   " nodes need about " + amount(e.megabytes) + " of memory, over the limit of " + l.words);
 }
 
 }  // namespace bisect::cli

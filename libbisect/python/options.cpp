@@ -125,7 +125,7 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "size_grading") o.sizing.size_grading = number(value, "size_grading");
     else if (k == "max_elements") {  // thin walls and small features past this many: refused before the fill
       o.max_elements = number(value, "max_elements");
-      o.limit_cause = "max_elements (mesh_shape: what half of this machine's memory holds)";
+      o.limit_cause = "max_elements (mesh_shape's default: what half of this machine's memory holds)";
     }
     else if (k == "regions") {
       if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))

@@ -72,12 +72,10 @@ double field_count(const Decomposition& d, const size::SizeField& h) {
 
 // What keeps the elements smaller than R asks, for the element bound's message.
 std::string element_bound_why(const size::BrepSizeReport& sizes) {
-  char why[128] = "";
-  if (sizes.thinnest_wall > 0)
-    std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", sizes.thinnest_wall,
-                  size::kWallSizeFactor * sizes.thinnest_wall);
-  else if (sizes.smallest_edge > 0)
-    std::snprintf(why, sizeof why, "B-rep edges down to %.3g long", sizes.smallest_edge);
+  if (sizes.thinnest_wall > 0) return pipeline::walls_why(sizes.thinnest_wall);
+  if (!(sizes.smallest_edge > 0)) return "";
+  char why[64];
+  std::snprintf(why, sizeof why, "B-rep edges down to %.3g long", sizes.smallest_edge);
   return why;
 }
 
@@ -294,7 +292,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     const double wall_size = size::kWallSizeFactor * sizes.thinnest_wall;
     auto finer = [](double a, double b) { return a > 0 && (b <= 0 || a < b); };  // a set, and below b (0: none)
     if (finer(wall_size, sizes.smallest_edge) && finer(wall_size, sizes.smallest_curvature_size))
-      st.count_floor_reason = "thickness: walls down to " + length(sizes.thinnest_wall) + " thick, elements no larger across them";
+      st.count_floor_reason = pipeline::walls_floor_reason(sizes.thinnest_wall);
     else if (finer(sizes.smallest_edge, sizes.smallest_curvature_size))
       st.count_floor_reason = "features: B-rep edges down to " + length(sizes.smallest_edge);
     else if (sizes.smallest_curvature_size > 0)

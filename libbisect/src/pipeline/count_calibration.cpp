@@ -57,13 +57,22 @@ std::string walls_below(const std::vector<double>& cap, double spacing) {
   double thinnest = 0;
   for (double c : cap)
     if (c > 0 && c < spacing) thinnest = thinnest > 0 ? std::min(thinnest, c) : c;
-  if (!(thinnest > 0)) return "";
-  char why[96];
-  std::snprintf(why, sizeof why, "walls down to %.3g thick get elements no larger than %.3g", thinnest / size::kWallSizeFactor, thinnest);
-  return why;
+  return thinnest > 0 ? walls_why(thinnest / size::kWallSizeFactor) : "";
 }
 
 }  // namespace
+
+std::string walls_floor_reason(double thickness) {
+  char text[96];
+  std::snprintf(text, sizeof text, "thickness: walls down to %.3g thick, elements no larger across them", thickness);
+  return text;
+}
+
+std::string walls_why(double thickness) {
+  char text[96];
+  std::snprintf(text, sizeof text, "walls down to %.3g thick get elements no larger than %.3g", thickness, size::kWallSizeFactor * thickness);
+  return text;
+}
 
 void check_element_bound(double predicted, const GenerateOptions& opt, const std::string& source, const std::string& why, const char* by) {
   if (!(opt.max_elements > 0) || predicted <= opt.max_elements) return;

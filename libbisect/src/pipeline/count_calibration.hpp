@@ -27,6 +27,12 @@ struct Calibrated {
   bool floor_by_walls = false;   // the walls' caps, not the input's facets, set count_floor
 };
 
+// The walls' words, the same in both routes: for count_floor_reason ("thickness: walls down to T
+// thick, elements no larger across them") and for the element bound's message ("walls down to T
+// thick get elements no larger than 0.8 T"), T to 3 digits.
+std::string walls_floor_reason(double thickness);
+std::string walls_why(double thickness);
+
 // Throws InputError when `predicted` tetrahedra exceed opt.max_elements (when set), naming
 // `source`, what predicted them (`by`), what keeps the elements small (`why`, may be empty) and
 // opt.limit_cause.

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <unordered_set>
 
@@ -73,13 +72,8 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.fillings = cal.fillings;
   st.count_floor = cal.count_floor;
   if (st.count_floor > 0) {
-    if (cal.floor_by_walls) {  // cells' walls kept their spacing below R's
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g", cal.thinnest_wall);
-      st.count_floor_reason = std::string("thickness: walls down to ") + text + " thick, elements no larger across them";
-    } else {
-      st.count_floor_reason = "facets";  // the input's own nodes and edges
-    }
+    // cells' walls kept their spacing below R's, else the input's own nodes and edges
+    st.count_floor_reason = cal.floor_by_walls ? pipeline::walls_floor_reason(cal.thinnest_wall) : "facets";
   }
   st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
   st.refilled_cells = b.refilled_cells;
