@@ -69,6 +69,22 @@ class ShapeMesherTest(unittest.TestCase):
         for n in shared:
             self.assertAlmostEqual(mesh.getNodeById(n).x, 10.0, places=9)
 
+    def test_overlapping_solids_are_refused_naming_both(self):
+        # a compound of a box and a cylinder through it (neither fused nor fragmented): meshed
+        # apart, the two meshes would fill the cylinder's part of the box twice
+        box = Part.makeBox(10, 10, 10)
+        cylinder = Part.makeCylinder(3, 20, FreeCAD.Vector(5, 5, -5))
+        with self.assertRaises(ValueError) as caught:
+            shape_mesher.mesh_shape(Part.makeCompound([box, cylinder]), elements=2000, order=1)
+        self.assertIn("Solid1 and Solid2 overlap (a common volume of 283 around (5, 5, 5))", str(caught.exception))
+        # the same two as BooleanFragments share their faces and mesh as one conforming body
+        fragments = BOPTools.SplitAPI.booleanFragments([box, cylinder], "Split")
+        self.assertEqual(len(fragments.Solids), 4)
+        mesh = shape_mesher.mesh_shape(fragments, elements=4000, order=1)
+        self.assertTrue(bisectmesh.quality(mesh)["valid"])
+        volumes = sum(len(group(mesh, "Solid%d" % k)) for k in range(1, 5))
+        self.assertEqual(volumes, mesh.VolumeCount)
+
     def test_resolution(self):
         shape = Part.makeBox(10, 20, 30)
         # FreeCAD's view rule: the mean of the bounding box's sides times the deviation in percent

@@ -408,6 +408,11 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
       const Index f = rfaces[r][k];
       const ModelFace& F = m.faces[f];
       if (F.front == mh || F.back == mh) continue;  // already shared with the holder
+      // a region that lists the face lies there, between r and the holder: a cylinder through a
+      // box as BooleanFragments, whose middle piece fills the box's hole and whose end pieces
+      // hold its discs (the middle piece's point lies in the box's outer shell, and the box's
+      // hole is a shell of its own)
+      if ((sign[r][k] < 0 ? F.back : F.front) >= 0) continue;
       claim(f, mh, sign[r][k] < 0, holder);  // the holder lies outside r
     }
   }

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <limits>
 
+#include "bisect/errors.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "optimize/smooth.hpp"
+#include "util/progress_poll.hpp"
 
 namespace bisect::optimize {
 
@@ -19,8 +21,25 @@ constexpr double kWorkBelowKey = 0.15;
 
 }  // namespace
 
-OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt) {
+OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt,
+                             const std::function<bool(double)>& progress) {
   OptimizeCounts n;
+  // Stop within a pass: the loops poll cx.cancelled, which calls progress now and then
+  util::ProgressPoll poll(progress);
+  const std::function<bool()> outer_cancelled = cx.cancelled;
+  struct Restore {  // the complex outlives this call: its hook is put back on every way out
+    tet::TetComplex& cx;
+    const std::function<bool()>& outer;
+    ~Restore() { cx.cancelled = outer; }
+  } restore{cx, outer_cancelled};
+  if (progress) cx.cancelled = [&poll] { return poll.cancelled(); };
+  const int passes = std::max(opt.passes, opt.smooth_passes);
+  const double steps = 2.0 * passes + 1;
+  double step = 0;
+  const auto next_step = [&] {
+    if (progress && poll.report(step / steps)) throw Cancelled();
+    ++step;
+  };
   const double sliver_below = sliver_key(kSliverBelowDeg);
   // every change (flip, node move, insertion) goes on a log, from which the lists follow
   std::vector<Index> changed;
@@ -43,8 +62,8 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
     }
     changed.clear();
   };
-  const int passes = std::max(opt.passes, opt.smooth_passes);
   for (int pass = 0; pass < passes; ++pass) {
+    next_step();
     if (pass < opt.passes) {
       if (pass == 0) {
         n.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
@@ -53,6 +72,7 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
         n.flips += cx.improve_around(poor);
       }
     }
+    next_step();
     if (pass < opt.smooth_passes) {
       if (pass == 0) {
         std::vector<Index> all;
@@ -66,6 +86,7 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
       }
     }
   }
+  next_step();
   relist();
   if (opt.sliver_rounds > 0)
     n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));

@@ -3,6 +3,7 @@
 // faces are gone) in turn with Laplace smoothing, each opening moves for the other; then the
 // repair of the slivers they leave. The first pass covers the whole mesh, the rest work lists.
 #pragma once
+#include <functional>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct OptimizeCounts {
 };
 
 // cx works on X; fixed[v]: node v never moves (X may grow: the sliver repair inserts nodes).
-OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt);
+// progress(fraction of the optimisation done) is called on this thread, at every step and every
+// 50 ms within one; false throws Cancelled.
+OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt,
+                             const std::function<bool(double)>& progress = {});
 
 }  // namespace bisect::optimize

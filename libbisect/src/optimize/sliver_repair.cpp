@@ -77,7 +77,9 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
     changed.clear();
     std::size_t moved = 0;
     std::vector<Index> touched, stuck;  // stuck: no move of a node improves them
+    std::size_t step = 0;
     for (Index t : list) {
+      cx.poll(step++);
       const Tet u = cx.tet[t];  // no tetrahedron goes within the loop: t is live
       if (tet_worst(X, u) <= limit) continue;
       const double edge = mean_edge(X, u);
@@ -138,6 +140,7 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
     std::size_t inserted = 0;
     std::vector<Tet> replaced;
     for (Index t : stuck) {
+      cx.poll(step++);
       if (round + 1 >= rounds || !cx.alive[t]) continue;
       const Tet u = cx.tet[t];
       if (!fixed[u[0]] || !fixed[u[1]] || !fixed[u[2]] || !fixed[u[3]]) continue;

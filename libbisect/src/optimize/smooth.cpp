@@ -32,7 +32,9 @@ std::size_t smooth_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::v
     todo.erase(std::unique(todo.begin(), todo.end(), [](const auto& a, const auto& b) { return a.first == b.first; }), todo.end());
   }
   std::size_t moves = 0;
+  std::size_t step = 0;
   for (const auto& [v, t0] : todo) {
+    cx.poll(step++);
     // t0 was at v when listed; a move does not change which tetrahedra there are
     const std::vector<Index> around = star(cx, v, t0);
     double before = std::numeric_limits<double>::max();

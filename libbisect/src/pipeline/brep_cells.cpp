@@ -1,6 +1,7 @@
 #include "pipeline/brep_cells.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <set>
@@ -24,11 +25,16 @@ struct Side {
 
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    bool last_resort_allowed, BrepCellCounts* counts) {
+                                    bool last_resort_allowed, BrepCellCounts* counts, const std::function<bool()>& cancelled) {
   const std::size_t n = d.cells.size();
   const PolyhedralModel& m = d.model;
   // per cell: its face pieces' triangles (outward) and its cut faces with their two sides
   std::vector<std::vector<std::array<Index, 3>>> piece_tris(n);
+  std::vector<std::set<Index>> brep_faces(n);  // per cell: the B-rep faces it lies on, for messages
+  for (const FacePiece& piece : g.pieces) {
+    brep_faces[piece.cell_out].insert(piece.face);
+    if (piece.cell_in >= 0) brep_faces[piece.cell_in].insert(piece.face);
+  }
   for (const FacePiece& piece : g.pieces)
     for (const auto& t : piece.tris) {
       piece_tris[piece.cell_out].push_back(t);
@@ -81,7 +87,24 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
     job.centre = volume > 0 ? Vec3(centre / volume) : cells[root].centre;
     job.centre_p = cells[root].centre_p;
     job.region = d.cells[root].source_region;
-    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(in, d.cells[root].source_region);
+    // where a user can look: the cell's centre and the B-rep faces it lies on (the cell's number
+    // is the decomposition's, which no user sees)
+    char at[96];
+    std::snprintf(at, sizeof at, " at (%.4g, %.4g, %.4g)", job.centre.x(), job.centre.y(), job.centre.z());
+    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(in, d.cells[root].source_region) + at;
+    std::set<Index> faces;
+    for (Index c : mem) faces.insert(brep_faces[c].begin(), brep_faces[c].end());
+    if (!faces.empty()) {
+      job.name += " beside";
+      int listed = 0;
+      for (Index f : faces) {
+        if (listed++ == 3) {
+          job.name += " and " + std::to_string(faces.size() - 3) + " more";
+          break;
+        }
+        job.name += (listed > 1 ? ", " : " ") + face_name(f);
+      }
+    }
     if (mem.size() > 1) job.name += " (joined with " + std::to_string(mem.size() - 1) + " neighbour" + (mem.size() > 2 ? "s)" : ")");
     return job;
   };
@@ -94,6 +117,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   std::vector<char> last_resort(n, 0);  // cells filled in the proxy keeping fixed inverted tetrahedra
   std::vector<char> recover(n, 0);      // cells filled by boundary recovery
   for (std::size_t c = 0; c < n; ++c) {
+    if (cancelled && cancelled()) throw Cancelled();  // the trial fillings below add up: Stop within them
     if (group[c] != static_cast<Index>(c)) continue;
     const std::vector<Index> group_before = group;
     const std::vector<std::vector<Index>> members_before = members;

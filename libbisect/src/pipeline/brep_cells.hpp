@@ -11,6 +11,7 @@
 // global optimisation to flip away (the finished mesh is checked).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "bisect/polyhedral_model.hpp"
@@ -36,6 +37,7 @@ struct BrepCellCounts {
 // MeshingError naming the cell when none of the four ways works.
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    bool last_resort_allowed, BrepCellCounts* counts);
+                                    bool last_resort_allowed, BrepCellCounts* counts,
+                                    const std::function<bool()>& cancelled = {});
 
 }  // namespace bisect::pipeline

@@ -10,6 +10,7 @@
 #include "surface/analytic_surfaces.hpp"
 #include "surface/region_mesher.hpp"
 #include "util/ordered_parallel.hpp"
+#include "util/progress_poll.hpp"
 
 namespace bisect::pipeline {
 namespace {
@@ -133,7 +134,7 @@ std::vector<std::vector<DirEdge>> chain_loops(const BrepBoundary& bd, const Para
 // two cut lines meeting at a small angle, drawn by coarse chords): each of its model faces, a
 // planar piece of one proxy facet, meshed in its plane and mapped onto the surface through the
 // facet's parameters. Every node still lies on the face; the facets' edges show in the grid.
-Made mesh_piece_on_facets(const BrepBoundary& bd, const PieceJob& job, const size::SizeField& h) {
+Made mesh_piece_on_facets(const BrepBoundary& bd, const PieceJob& job, const size::SizeField& h, const std::function<bool()>& cancelled) {
   const ParametricSurface& surf = *bd.in.faces[job.face].surface;
   Made out;
   std::map<Index, Index> local;
@@ -171,6 +172,7 @@ Made mesh_piece_on_facets(const BrepBoundary& bd, const PieceJob& job, const siz
     }
     surface::RegionMeshOptions ro;
     ro.size = [&h](const Vec3& x) { return h.at(x); };
+  ro.cancelled = cancelled;
     const surface::RegionMesh rm = surface::mesh_region(plane, rb, ro);
     // local ids of this piece's mesh: boundary nodes shared across the piece's faces
     std::vector<Index> id(rm.uv.size());
@@ -199,7 +201,7 @@ Made mesh_piece_on_facets(const BrepBoundary& bd, const PieceJob& job, const siz
   return out;
 }
 
-Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeField& h) {
+Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeField& h, const std::function<bool()>& cancelled) {
   const BrepInput& in = bd.in;
   const ParametricSurface& surf = *in.faces[job.face].surface;
   const std::string where = face_name(job.face);
@@ -279,6 +281,7 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
     for (auto& l : rb.loops) std::reverse(l.begin(), l.end());
   surface::RegionMeshOptions ro;
   ro.size = [&h](const Vec3& x) { return h.at(x); };
+  ro.cancelled = cancelled;
   surface::RegionMesh rm;
   // a piece at a pole is meshed over a plane: its (u, v) draws straight segments bent round the
   // pole; any piece whose (u, v) polygon the mesher cannot use gets the same second chance
@@ -290,7 +293,7 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
       rm = at_pole ? surface::mesh_region(surf, rb, ro) : surface::mesh_region_projected(surf, rb, ro);
     } catch (const MeshingError& second) {
       try {
-        return mesh_piece_on_facets(bd, job, h);
+        return mesh_piece_on_facets(bd, job, h, cancelled);
       } catch (const MeshingError&) {
         throw MeshingError(where + ": " + (at_pole ? second : first).what());
       }
@@ -367,7 +370,7 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
 }
 
 // A cut face meshed in its plane with the proxy's positions: counter-clockwise around its normal.
-Made mesh_cut_face(const BrepBoundary& bd, Index fi, const size::SizeField& h) {
+Made mesh_cut_face(const BrepBoundary& bd, Index fi, const size::SizeField& h, const std::function<bool()>& cancelled) {
   const ModelFace& f = bd.model.faces[fi];
   const PlaneFrame frame(f.normal, bd.nodes.p[f.loops[0][0]]);
   const surface::PlaneSurface plane(frame.origin, frame.e1, frame.e2);
@@ -398,6 +401,7 @@ Made mesh_cut_face(const BrepBoundary& bd, Index fi, const size::SizeField& h) {
   }
   surface::RegionMeshOptions ro;
   ro.size = [&h](const Vec3& x) { return h.at(x); };
+  ro.cancelled = cancelled;
   surface::RegionMesh rm;
   try {
     rm = surface::mesh_region(plane, rb, ro);
@@ -422,7 +426,14 @@ double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
-BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::SizeField& h, int threads) {
+BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::SizeField& h, int threads,
+                          const std::function<bool(double)>& progress) {
+  // Stop within a face: the meshers poll `cancelled`; on the calling thread it asks progress (at
+  // most every 50 ms), elsewhere it reads the flag that answer sets; while the calling thread
+  // waits for a face meshed elsewhere, ordered_parallel's idle asks progress.
+  util::ParallelPoll poll(progress);
+  const std::function<bool()> cancelled = poll.hook();
+  const std::function<void()> idle = [&poll] { poll.idle(); };
   bd.discretise_edges(h);
   const PolyhedralModel& m = d.model;
   std::vector<std::vector<CellSide>> cells_of(m.faces.size());
@@ -499,12 +510,14 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
         n, util::thread_count(threads),
         [&](std::size_t k) {
           try {
-            made[k] = k < jobs.size() ? mesh_piece(bd, jobs[k], h) : mesh_cut_face(bd, cut_faces[k - jobs.size()], h);
+            made[k] = k < jobs.size() ? mesh_piece(bd, jobs[k], h, cancelled) : mesh_cut_face(bd, cut_faces[k - jobs.size()], h, cancelled);
           } catch (const MeshingError& e) {
             made[k].error = e.what();
           }
         },
         [&](std::size_t k) {
+          poll.at(static_cast<double>(k + 1) / static_cast<double>(n));
+          if (cancelled()) throw Cancelled();
           Made& mk = made[k];
           if (!mk.error.empty()) {
             failed.push_back(k);
@@ -535,7 +548,8 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
           }
           if (!failed.empty()) return;
           mk = {};
-        });
+        },
+        {}, idle);
     if (failed.empty()) return g;
     if (round >= 2) throw MeshingError(made[failed.front()].error);
     // a finer boundary where the meshing failed, then every grid again (they share the edges)

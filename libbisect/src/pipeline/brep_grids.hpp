@@ -13,6 +13,7 @@
 // made with the cut lines in it, never cut afterwards.
 #pragma once
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "bisect/polyhedral_model.hpp"
@@ -41,6 +42,9 @@ struct BrepGrids {
 // Meshes every face piece and cut face of the decomposition at the sizes of h, on `threads`
 // threads (the grids are the same for every count). Throws MeshingError naming the B-rep face
 // (FreeCAD's Face<k>) when a piece cannot be meshed.
-BrepGrids mesh_brep_faces(BrepBoundary& boundary, const Decomposition& d, const size::SizeField& h, int threads);
+// progress(fraction of the faces done) is called on this thread, at least every 50 ms while a face
+// is meshed; false throws Cancelled.
+BrepGrids mesh_brep_faces(BrepBoundary& boundary, const Decomposition& d, const size::SizeField& h, int threads,
+                          const std::function<bool(double)>& progress = {});
 
 }  // namespace bisect::pipeline

@@ -32,10 +32,10 @@ std::int64_t BrepPlacement::boundary_nodes() const {
 std::int64_t BrepPlacement::inside_nodes() const { return static_cast<std::int64_t>(on_boundary.size()) - boundary_nodes(); }
 
 BrepPlacement place_brep_nodes(const BrepInput& in, const BrepProxy& proxy, const Decomposition& d, const size::SizeField& h,
-                               int threads) {
+                               int threads, const std::function<bool(double)>& progress) {
   BrepBoundary bd(in, proxy, d.model);
   BrepPlacement f;
-  f.grids = mesh_brep_faces(bd, d, h, threads);
+  f.grids = mesh_brep_faces(bd, d, h, threads, progress);
   const Morph morph(f.grids.nodes, h);
   const auto& gn = f.grids.nodes;
   f.X = gn.x;

@@ -5,6 +5,7 @@
 // takes them (brep_cells.hpp) are made only for the placement that is filled.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "bisect/brep_input.hpp"
@@ -28,7 +29,9 @@ struct BrepPlacement {
   std::int64_t inside_nodes() const;
 };
 
+// progress(fraction) as mesh_brep_faces calls it (the grids are the placement's bulk); false
+// throws Cancelled.
 BrepPlacement place_brep_nodes(const BrepInput& in, const BrepProxy& proxy, const Decomposition& d, const size::SizeField& h,
-                               int threads);
+                               int threads, const std::function<bool(double)>& progress = {});
 
 }  // namespace bisect::pipeline

@@ -10,6 +10,7 @@
 #include "tet/cell_fill.hpp"
 #include "tet/recovery_fill.hpp"
 #include "util/ordered_parallel.hpp"
+#include "util/progress_poll.hpp"
 
 namespace bisect::pipeline {
 namespace {
@@ -39,7 +40,8 @@ struct CellFilling {
   bool recovered = false;     // a star fill replaced by Delaunay boundary recovery's (better)
 };
 
-CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const std::vector<Vec3>* proxy, bool delaunay) {
+CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const std::vector<Vec3>* proxy, bool delaunay,
+                     const std::function<bool()>& cancelled = {}) {
   CellFilling out;
   std::vector<std::array<Index, 3>> boundary = job.boundary;
   for (const auto& t : boundary) out.global.insert(out.global.end(), t.begin(), t.end());
@@ -65,7 +67,7 @@ CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const s
       out.moved.assign(X.begin(), X.begin() + static_cast<std::ptrdiff_t>(out.global.size()));
     } else {
       const std::size_t own = X.size();
-      out.tets = tet::fill_convex_cell(X, boundary, interior, job.centre, delaunay, &out.stats);
+      out.tets = tet::fill_convex_cell(X, boundary, interior, job.centre, delaunay, &out.stats, cancelled);
       // The star and the local transformations from it can stay far from what the nodes allow:
       // a thin cell (a plate whose thickness is about the spacing, its two faces' grids not in
       // line) keeps a third of its tetrahedra under 10 degrees, which no later pass repairs.
@@ -123,9 +125,13 @@ FilledCells fill_cell_jobs(std::vector<Vec3>& X, const std::vector<CellJob>& job
   std::stable_sort(largest_first.begin(), largest_first.end(),
                    [&](std::size_t x, std::size_t y) { return jobs[x].interior.size() > jobs[y].interior.size(); });
   const std::vector<Vec3> nodes = X;  // the cells read these while helpers join X
+  // Stop within a cell: the fills poll it (a 2e5 mesh of 13 cells went a second without a call)
+  util::ParallelPoll poll(progress);
+  const std::function<bool()> cancelled = poll.hook();
   util::ordered_parallel(
-      n, util::thread_count(threads), [&](std::size_t c) { made[c] = fill_one(jobs[c], nodes, P, delaunay); },
+      n, util::thread_count(threads), [&](std::size_t c) { made[c] = fill_one(jobs[c], nodes, P, delaunay, cancelled); },
       [&](std::size_t c) {
+        poll.at(static_cast<double>(c) / static_cast<double>(n));
         CellFilling& f = made[c];
         // an untangled cell's interior nodes moved (its boundary nodes, shared, did not)
         for (std::size_t i = 0; i < f.moved.size(); ++i) X[f.global[i]] = f.moved[i];
@@ -146,7 +152,8 @@ FilledCells fill_cell_jobs(std::vector<Vec3>& X, const std::vector<CellJob>& job
         f = {};
         if (progress && !progress(static_cast<double>(c + 1) / static_cast<double>(n))) throw Cancelled();
       },
-      largest_first);
+      largest_first, [&poll] { poll.idle(); });
+  if (poll.cancelled()) throw Cancelled();
   return out;
 }
 

@@ -101,7 +101,9 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   // nodes on input faces stay where they are
   std::vector<char> fixed = pipeline::node_kinds(d.model, b);
   for (char& k : fixed) k = k != pipeline::kInside;
-  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize);
+  std::function<bool(double)> optimize_progress;
+  if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
+  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize, optimize_progress);
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
   if (progress && !progress(1.0)) throw Cancelled();

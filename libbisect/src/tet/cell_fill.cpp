@@ -164,7 +164,8 @@ bool star_centre(const std::vector<Vec3>& X, const std::vector<std::array<Index,
 }
 
 std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
-                                  const std::vector<Index>& interior, const Vec3& centroid, bool delaunay, CellFillStats* stats) {
+                                  const std::vector<Index>& interior, const Vec3& centroid, bool delaunay, CellFillStats* stats,
+                                  const std::function<bool()>& cancelled) {
   CellFillStats st;
   // the star's centre: the interior node nearest the centroid, else a helper at the centroid
   std::vector<Index> rest = interior;
@@ -186,13 +187,16 @@ std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::a
   // only the worst tetrahedra (Ω < 0.12 sr) get edge removal here: the global passes see every
   // tetrahedron again with the full threshold, and at half the filling's cost
   cx.edge_removal_below = 0.060072058;  // tan(0.06)
+  cx.cancelled = cancelled;
   cx.build(std::move(tets));
   st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
   if (delaunay) brio_order(X, rest);
   // the other nodes (min-max: nearest the centre first, so that each walk starts close to its
   // target; Delaunay: in biased randomised rounds, see brio_order)
   Index last = 0;
+  std::size_t step = 0;
   for (Index v : rest) {
+    cx.poll(step++);
     const std::vector<Index> made = delaunay ? cx.insert_delaunay(v, last) : cx.insert(v, last);
     if (made.empty()) {
       ++st.skipped;

@@ -8,6 +8,7 @@
 // edges at it taken out until a 4-1 flip removes it), either kept only when the cell's worst
 // tetrahedron is no worse than with the helper; a helper that stays is a valid node of the mesh.
 #pragma once
+#include <functional>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -36,8 +37,9 @@ bool star_centre(const std::vector<Vec3>& X, const std::vector<std::array<Index,
 // cavities and improve once at the end, instead of the thesis's local min-max improvement after
 // every insertion. Returns positively oriented tetrahedra
 // whose boundary is exactly `boundary`. Throws MeshingError when the star cannot be built.
+// cancelled (when set) is polled now and then (TetComplex::cancelled); true throws Cancelled.
 std::vector<Tet> fill_convex_cell(std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
                                   const std::vector<Index>& interior, const Vec3& centroid, bool delaunay = false,
-                                  CellFillStats* stats = nullptr);
+                                  CellFillStats* stats = nullptr, const std::function<bool()>& cancelled = {});
 
 }  // namespace bisect::tet

@@ -13,6 +13,10 @@
 
 namespace bisect::tet {
 
+void TetComplex::poll(std::size_t step) const {
+  if (cancelled && step % kPollEvery == kPollEvery - 1 && cancelled()) throw Cancelled();
+}
+
 using geom::orient3d;
 
 FaceKey face_key(Index a, Index b, Index c) {

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -59,6 +60,12 @@ class TetComplex {
   // When set, `replace` and `moved` append the tetrahedra they make or change: the optimiser's
   // work lists follow the changes without a scan of the mesh.
   std::vector<Index>* changed = nullptr;
+  // When set, the long loops (the transformations' queue, the smoothing, the sliver repair) call
+  // it now and then (every kPollEvery steps); true stops them with Cancelled. The optimiser sets
+  // it from the progress callback, so that Stop takes effect within a pass.
+  std::function<bool()> cancelled;
+  static constexpr std::size_t kPollEvery = 2048;
+  void poll(std::size_t step) const;  // throws Cancelled when cancelled() says so (every kPollEvery steps)
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
   // default to 0.

@@ -100,6 +100,7 @@ bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& 
 std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::int64_t max_ops) {
   std::int64_t ops = 0;
   for (std::size_t i = 0; i < queue.size() && ops < max_ops; ++i) {
+    poll(i);
     const auto [t, f] = queue[i];
     if (!alive[t] || is_constrained(t, f)) continue;
     if (try_flip23(t, f, queue) || (boundary_flips && try_flip22(t, f, queue))) {

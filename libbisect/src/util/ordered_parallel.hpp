@@ -8,12 +8,17 @@
 // be committed comes (so the error reported is the first in order, whatever the timing); an
 // exception from commit (a cancellation from a progress callback, say) stops the other
 // threads after their current job and then propagates. Nothing runs after the call returns.
+// While the calling thread waits for a job in progress elsewhere, it calls idle() every 50 ms
+// (when given): a progress callback that must run on the calling thread keeps being asked, and
+// can tell the jobs to stop (through the jobs' own flag), while one long job holds the order.
 #pragma once
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -29,7 +34,8 @@ inline int thread_count(int requested) {
 // work(i) for every i in [0, n), taken in the order of `sequence` (a permutation of 0..n-1,
 // e.g. the largest jobs first; empty: 0..n-1); commit(i) for i = 0..n-1 on this thread.
 template <class Work, class Commit>
-void ordered_parallel(std::size_t n, int threads, Work&& work, Commit&& commit, const std::vector<std::size_t>& sequence = {}) {
+void ordered_parallel(std::size_t n, int threads, Work&& work, Commit&& commit, const std::vector<std::size_t>& sequence = {},
+                      const std::function<void()>& idle = {}) {
   auto job = [&](std::size_t k) { return sequence.empty() ? k : sequence[k]; };
   if (threads <= 1 || n <= 1) {
     std::vector<char> ready(n, 0);
@@ -96,7 +102,19 @@ void ordered_parallel(std::size_t n, int threads, Work&& work, Commit&& commit, 
     }
     if (run_one()) continue;  // help while the next one in order is being made
     std::unique_lock<std::mutex> lock(mutex);
-    changed.wait(lock, [&] { return ready[next] != 0; });
+    if (!idle) {
+      changed.wait(lock, [&] { return ready[next] != 0; });
+      continue;
+    }
+    if (!changed.wait_for(lock, std::chrono::milliseconds(50), [&] { return ready[next] != 0; })) {
+      lock.unlock();
+      try {
+        idle();
+      } catch (...) {
+        stop.store(true);
+        throw;
+      }
+    }
   }
 }
 

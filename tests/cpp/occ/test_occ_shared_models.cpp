@@ -46,7 +46,8 @@ TEST_P(OccSharedModel, LoadsAndTessellatesClosed) {
     // (corpus/cube_filet.brep: an open shell) refused in one line that says why
     const std::string m = test::error_of([&] { load_brep_file(path); });
     EXPECT_HAS(m, path + ": the shape has no solid to mesh (it holds ");
-    EXPECT_HAS(m, " faces and no closed shell)");
+    EXPECT_HAS(m, " faces and no closed shell: ");
+    EXPECT_HAS(m, " edges bound one face only, where the shell is open (Edge");
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -16,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
+#include <string>
 
 #include "bisect/occ_checker.hpp"
 #include "input_error.hpp"
@@ -169,6 +172,25 @@ TEST(OccTopology, CompoundOfSolidsKeepsItsInterfaces) {
   EXPECT_EQ(in.faces.size(), 11u);
 }
 
+TEST(OccTopology, OverlappingSolidsAreRefusedNamingBoth) {
+  // a compound of three unit-ish boxes: the first two apart, the third through the second
+  TopoDS_Compound c;
+  BRep_Builder b;
+  b.MakeCompound(c);
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(-5, 0, 0), 2, 2, 2).Shape());
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape());
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(1, 1, 1), 2, 2, 2).Shape());
+  EXPECT_EQ(test::error_of([&] { input_of(c, "assembly"); }),
+            "assembly: Solid2 and Solid3 overlap (a common volume of 1 around (1.5, 1.5, 1.5)): meshed apart they would fill that "
+            "space twice; fuse them, or make them BooleanFragments so that they share their faces");
+  // touching along a face, not sharing it (an assembly's parts side by side): no volume in common
+  TopoDS_Compound side;
+  b.MakeCompound(side);
+  b.Add(side, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape());
+  b.Add(side, BRepPrimAPI_MakeBox(gp_Pnt(2, 0, 0), 2, 2, 2).Shape());
+  EXPECT_EQ(input_of(side, "side by side").solids.size(), 2u);
+}
+
 TEST(OccTopology, ShellListedBesideItsSolidIsNoSecondSolid) {
   // as corpus/x_cube_sphere_cube_compound.brep has it: the compound holds the solid and its shell
   const TopoDS_Shape box = test::make_box();
@@ -222,12 +244,36 @@ TEST(OccTopology, OpenShellHasNoSolidToMesh) {
   TopoDS_Shell open;
   b.MakeShell(open);
   int n = 0;
-  for (TopExp_Explorer ex(test::make_box(), TopAbs_FACE); ex.More() && n < 5; ex.Next(), ++n) b.Add(open, ex.Current());
+  const TopoDS_Shape box = test::make_box();
+  for (TopExp_Explorer ex(box, TopAbs_FACE); ex.More() && n < 5; ex.Next(), ++n) b.Add(open, ex.Current());
   const std::string m = test::error_of([&] { input_of(open, "Shell001"); });
-  EXPECT_EQ(m, "Shell001: the shape has no solid to mesh (it holds 5 faces and no closed shell)");
+  // where it is open, as FreeCAD numbers the edges and faces: the missing sixth face's edges
+  const std::string head = "Shell001: the shape has no solid to mesh (it holds 5 faces and no closed shell: 4 edges bound one face only, where the shell is open (";
+  ASSERT_EQ(m.substr(0, head.size()), head) << m;
+  TopoDS_Shape sixth;
+  n = 0;
+  for (TopExp_Explorer ex(box, TopAbs_FACE); ex.More(); ex.Next(), ++n)
+    if (n == 5) sixth = ex.Current();
+  TopTools_IndexedMapOfShape edges, faces, missing;
+  TopExp::MapShapes(open, TopAbs_EDGE, edges);
+  TopExp::MapShapes(open, TopAbs_FACE, faces);
+  TopExp::MapShapes(sixth, TopAbs_EDGE, missing);
+  const std::regex named(R"(Edge(\d+) of Face(\d+))");
+  int listed = 0;
+  for (std::sregex_iterator it(m.begin(), m.end(), named), end; it != end; ++it, ++listed) {
+    const int e = std::stoi((*it)[1]), f = std::stoi((*it)[2]);
+    ASSERT_TRUE(e >= 1 && e <= edges.Extent() && f >= 1 && f <= faces.Extent()) << m;
+    EXPECT_TRUE(missing.Contains(edges(e))) << "Edge" << e << " is not on the missing face: " << m;
+    TopTools_IndexedMapOfShape of_face;
+    TopExp::MapShapes(faces(f), TopAbs_EDGE, of_face);
+    EXPECT_TRUE(of_face.Contains(edges(e))) << m;
+  }
+  EXPECT_EQ(listed, 3) << m;
+  EXPECT_EQ(m.substr(m.size() - 7), ", ...))") << m;
   const TopoDS_Face one = BRepBuilderAPI_MakeFace(gp_Pln(), 0, 1, 0, 1).Face();
   EXPECT_EQ(test::error_of([&] { input_of(one, "Face"); }),
-            "Face: the shape has no solid to mesh (it holds 1 face and no closed shell)");
+            "Face: the shape has no solid to mesh (it holds 1 face and no closed shell: 4 edges bound one face only, where the shell "
+            "is open (Edge1 of Face1, Edge2 of Face1, Edge3 of Face1, ...))");
 }
 
 TEST(OccTopology, PlacedShapeIsEvaluatedWhereItIs) {

@@ -107,3 +107,56 @@ TEST(OrderedParallel, ThreadCountOfZeroIsOnePerCore) {
 
 }  // namespace
 }  // namespace bisect::util
+
+namespace bisect::util {
+namespace {
+
+TEST(OrderedParallel, IdleAsksWhileTheNextJobRunsElsewhere) {
+  // the first job a helper thread takes runs until idle has been called three times (or 5 s);
+  // the calling thread, done with its own jobs, waits for it and calls idle meanwhile
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<int> idles{0};
+  std::atomic<bool> claimed{false};
+  std::vector<std::size_t> committed;
+  ordered_parallel(
+      8, 2,
+      [&](std::size_t) {
+        if (std::this_thread::get_id() != caller && !claimed.exchange(true)) {
+          const auto start = std::chrono::steady_clock::now();
+          while (idles.load() < 3 && std::chrono::steady_clock::now() - start < std::chrono::seconds(5))
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        } else {
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the helper surely gets a job
+        }
+      },
+      [&](std::size_t i) { committed.push_back(i); }, {}, [&] { ++idles; });
+  ASSERT_TRUE(claimed.load());
+  EXPECT_GE(idles.load(), 3);
+  EXPECT_EQ(committed, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+}
+
+TEST(OrderedParallel, AnIdleThatThrowsStopsTheRun) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> claimed{false}, thrown{false};
+  EXPECT_THROW(ordered_parallel(
+                   8, 2,
+                   [&](std::size_t) {
+                     if (std::this_thread::get_id() != caller && !claimed.exchange(true)) {
+                       const auto start = std::chrono::steady_clock::now();
+                       while (!thrown.load() && std::chrono::steady_clock::now() - start < std::chrono::seconds(5))
+                         std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                     } else {
+                       std::this_thread::sleep_for(std::chrono::milliseconds(10));
+                     }
+                   },
+                   [](std::size_t) {}, {},
+                   [&] {
+                     thrown.store(true);
+                     throw std::runtime_error("stop");
+                   }),
+               std::runtime_error);
+  EXPECT_TRUE(thrown.load());
+}
+
+}  // namespace
+}  // namespace bisect::util
