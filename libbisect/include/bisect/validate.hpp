@@ -16,7 +16,8 @@ enum class ViolationKind {
   NonManifoldFace,  // a face shared by more than two tetrahedra; ids: the tetrahedra
   OpenBoundary,     // an edge of the boundary surface used by an odd number of boundary faces;
                     // ids: the edge's two nodes
-  DuplicateNode,    // two nodes at the same coordinates; ids: the nodes
+  DuplicateNode,    // two nodes of one body (tetrahedra joined through nodes) at the same
+                    // coordinates; ids: the nodes. Separate bodies may touch.
   UnusedNode,       // a node no tetrahedron uses; ids: the node
   BadMidNode,       // order 2: a mid-edge node shared inconsistently by two tetrahedra of the
                     // same edge; ids: the tetrahedra

@@ -139,6 +139,17 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
           for (const Side& s : cut_sides[f])
             if (group[s.cell] != root && (best < 0 || g.cut_tris[f].size() > most)) most = g.cut_tris[f].size(), best = s.cell;
       if (joins >= kMaxJoins || best < 0) {
+        // the joined cells by Delaunay boundary recovery: larger than the cell alone, their
+        // boundary less often folds past the recovery's reach (corpus/x_ring.brep: a cell whose
+        // neighbours' joined boundary recovered where its own did not)
+        if (members[root].size() > 1) {
+          CellJob joined = job;
+          joined.recover = true;
+          if (fill_job_works(joined, X, &P, delaunay)) {
+            recover[c] = 1;
+            break;
+          }
+        }
         // the last resort: the cell alone, filled in the proxy, a tetrahedron of four boundary
         // nodes left inverted for the global optimisation's flips
         group = group_before, members = members_before, counts->joined = joined_before;

@@ -1,6 +1,7 @@
 #include "pipeline/brep_order2.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -177,8 +178,15 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
         }
   }
   for (std::size_t t = 0; t < nt; ++t)
-    if (!(tet10_jacobian_ratio(out, t) > 0))
-      throw MeshingError("tetrahedron " + std::to_string(t + 1) + ": its 10-node Jacobian stays non-positive even straight");
+    if (!(tet10_jacobian_ratio(out, t) > 0)) {
+      // straight, its Jacobian is the corners' own: a tetrahedron flat to round-off (Cone_1's apex)
+      Vec3 centre = Vec3::Zero();
+      for (int k = 0; k < 4; ++k) centre += out.nodes[out.tet_node(t, k)] / 4;
+      char at[96];
+      std::snprintf(at, sizeof at, " (%.4g, %.4g, %.4g)", centre.x(), centre.y(), centre.z());
+      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at" + at +
+                         " is nearly flat: its 10-node Jacobian is not positive even with straight edges (a defect of the mesher)");
+    }
   return out;
 }
 

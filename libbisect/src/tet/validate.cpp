@@ -251,9 +251,39 @@ private:
     }
   }
 
+  // Per node: the connected body (tetrahedra joined through shared nodes) it belongs to; -1 for a
+  // node no tetrahedron uses.
+  std::vector<Index> bodies() const {
+    std::vector<Index> parent(nn_);
+    std::iota(parent.begin(), parent.end(), Index(0));
+    const auto root = [&](Index v) {
+      while (parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for (std::size_t t = 0; t < nt_; ++t) {
+      const Index first = m_.tet_node(t, 0);
+      if (first < 0 || static_cast<std::size_t>(first) >= nn_) continue;
+      for (int k = 1; k < npt_; ++k) {
+        const Index v = m_.tet_node(t, k);
+        if (v >= 0 && static_cast<std::size_t>(v) < nn_) parent[root(v)] = root(first);
+      }
+    }
+    std::vector<char> used(nn_, 0);
+    for (std::size_t t = 0; t < nt_; ++t)
+      for (int k = 0; k < npt_; ++k) {
+        const Index v = m_.tet_node(t, k);
+        if (v >= 0 && static_cast<std::size_t>(v) < nn_) used[v] = 1;
+      }
+    for (std::size_t v = 0; v < nn_; ++v) parent[v] = used[v] ? root(static_cast<Index>(v)) : -1;  // -1: in no body
+    return parent;
+  }
+
   // Identical coordinates found by sorting the nodes lexicographically: equal points end up
-  // next to each other.
+  // next to each other. Only within one body: separate bodies (an assembly's parts, which share
+  // no node as the CAD shares no face) may touch, and their coincident nodes are no crack
+  // (corpus/x_ring.brep's two solids, x_as1_tu_203's parts).
   void check_duplicate_nodes() {
+    const std::vector<Index> body = bodies();
     std::vector<Index> order(nn_);
     std::iota(order.begin(), order.end(), Index(0));
     const auto& p = m_.nodes;
@@ -268,7 +298,12 @@ private:
       std::size_t j = i + 1;
       // == rather than the sort's equivalence: NaN is nowhere, so never a duplicate.
       while (j < order.size() && p[order[j]] == p[order[i]]) ++j;
-      if (j - i > 1) {
+      std::vector<Index> in_bodies;
+      for (std::size_t k = i; k < j; ++k) in_bodies.push_back(body[order[k]]);
+      std::sort(in_bodies.begin(), in_bodies.end());
+      // a node of no body is a duplicate of any (and reported unused as well)
+      const bool one_body = in_bodies.front() < 0 || std::adjacent_find(in_bodies.begin(), in_bodies.end()) != in_bodies.end();
+      if (j - i > 1 && one_body) {
         std::vector<std::int64_t> ids;
         for (std::size_t k = i; k < j; ++k) ids.push_back(m_.node_id(order[k]));
         std::sort(ids.begin(), ids.end());

@@ -176,6 +176,22 @@ TEST(Validate, DuplicateNodeCrack) {
   EXPECT_NE(v[0].message.find("(1, 0, 0)"), std::string::npos) << v[0].message;
 }
 
+TEST(Validate, SeparateBodiesMayTouch) {
+  // two tetrahedra that share no node, the second's corner on the first's: two bodies touching
+  // (an assembly's parts meshed apart), no crack; the same copy inside one body is one
+  TetMesh m;
+  m.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(1, 0, 1)};
+  const Index a[4] = {0, 1, 2, 3}, b[4] = {4, 5, 6, 7};
+  m.add_tet(a);
+  m.add_tet(b);
+  EXPECT_TRUE(validate(m).empty()) << describe(validate(m));
+  const Index bridge[4] = {1, 5, 6, 7};  // joins the bodies through node 1: nodes 2 and 5 are one body's now
+  m.add_tet(bridge);
+  const auto dup = of_kind(validate(m), ViolationKind::DuplicateNode);
+  ASSERT_EQ(dup.size(), 1u) << describe(validate(m));
+  EXPECT_EQ(dup[0].ids, (Ids{2, 5}));
+}
+
 TEST(Validate, DuplicateNodesInGroupsAndNegativeZero) {
   TetMesh m = test::two_tet_mesh();
   m.node_ids = {10, 20, 30, 40, 50};
