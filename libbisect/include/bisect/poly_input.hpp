@@ -32,7 +32,17 @@ struct PolyInput {
   // tessellation's resolution); the face grids space their nodes no wider near it. Empty or 0:
   // no hint.
   std::vector<double> node_spacing;
+  // Optional, one per face: the name messages give it. A B-rep proxy's polygons and facets are
+  // named by their B-rep face ("Face12", as FreeCAD numbers it): a user cannot find the proxy's
+  // own numbers. Empty: "face N", the file's numbering.
+  std::vector<std::string> face_label;
 };
+
+// The name of input face f in messages: its label, else "face N" (1-based).
+inline std::string input_face_name(const PolyInput& in, Index f) {
+  if (f >= 0 && static_cast<std::size_t>(f) < in.face_label.size() && !in.face_label[f].empty()) return in.face_label[f];
+  return "face " + std::to_string(f + 1);
+}
 
 // Thesis 4.6.1: outer polygons, holes (negative node count) and sub-domains.
 struct Poly2Input {

@@ -107,9 +107,7 @@ int ray_crossings(const PolyhedralModel& m, const std::vector<Index>& faces, Ind
   return count;
 }
 
-std::string face_name(const PolyInput& in, Index input_face) {
-  return "face " + std::to_string(input_face + 1);
-}
+std::string face_name(const PolyInput& in, Index input_face) { return input_face_name(in, input_face); }
 
 
 // Per region: its faces grouped into shells (faces joined through edges that exactly two of the
@@ -252,7 +250,7 @@ PolyhedralModel prepare_model(const PolyInput& in, PreparationReport* report) {
     ModelFace f;
     f.loops.push_back(in.faces[i].nodes);
     const Vec3 nn = newell_normal(m.nodes, f.loops[0]);
-    if (nn.norm() <= 0) throw InputError(in.source + ": face " + std::to_string(i + 1) + " has zero area");
+    if (nn.norm() <= 0) throw InputError(in.source + ": " + face_name(in, static_cast<Index>(i)) + " has zero area");
     f.normal = nn.normalized();
     f.offset = f.normal.dot(m.nodes[f.loops[0][0]]);
     f.source = static_cast<Index>(i);

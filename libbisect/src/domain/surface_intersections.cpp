@@ -223,8 +223,11 @@ void reject_surface_intersections(const PolyInput& in) {
   const FaceIntersection& h = hits.front();
   std::ostringstream m;
   m.precision(6);
-  m << in.source << ": faces " << h.face_a + 1 << " and " << h.face_b + 1 << " intersect at (" << h.point.x() << ", "
-    << h.point.y() << ", " << h.point.z() << ") (" << h.kind << ")";
+  const std::string a = input_face_name(in, h.face_a), b = input_face_name(in, h.face_b);
+  if (in.face_label.empty()) m << in.source << ": faces " << h.face_a + 1 << " and " << h.face_b + 1;
+  else if (a == b) m << in.source << ": " << a << "'s tessellation folds: two of its facets";  // a B-rep proxy's
+  else m << in.source << ": the tessellations of " << a << " and " << b;
+  m << " intersect at (" << h.point.x() << ", " << h.point.y() << ", " << h.point.z() << ") (" << h.kind << ")";
   if (hits.size() > 1) m << "; " << hits.size() - 1 << (hits.size() >= 100 ? "+" : "") << " more pair(s)";
   throw InputError(m.str());
 }

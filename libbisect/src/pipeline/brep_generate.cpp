@@ -166,8 +166,12 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
       return out;
     } catch (const InputError& e) {
       // the proxy's own fault (its coarse facets meet): finer; the shape's fault shows again
-      if (attempt >= 3) throw InputError(in.source + ": the shape's tessellation is not a valid solid even at an angular deflection of " +
-                                         std::to_string(angle * 180 / M_PI) + " degrees (" + e.what() + ")");
+      if (attempt >= 3) {
+        char degrees[32];
+        std::snprintf(degrees, sizeof degrees, "%.3g", angle * 180 / M_PI);
+        throw InputError(in.source + ": the shape's tessellation is not a valid solid even at an angular deflection of " + degrees +
+                         " degrees (" + e.what() + ")");
+      }
       angle *= 0.5, linear *= 0.5;
     }
   }

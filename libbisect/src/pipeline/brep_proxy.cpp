@@ -187,6 +187,8 @@ BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
       }
     }
   }
+  // messages about the proxy name the B-rep faces (prepare's and the intersection check's)
+  for (Index f : px.face_brep) px.input.face_label.push_back(face_name(f));
   for (const BrepSolid& s : in.solids) {
     PolyRegion r;
     for (Index f : s.faces) r.faces.insert(r.faces.end(), faces_of_brep[f].begin(), faces_of_brep[f].end());

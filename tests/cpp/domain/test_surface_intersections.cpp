@@ -53,6 +53,18 @@ TEST(SurfaceIntersections, InterpenetratingBoxesCross) {
   EXPECT_NE(e.find(" intersect at ("), std::string::npos) << e;
 }
 
+TEST(SurfaceIntersections, LabelledFacesAreNamedByTheirLabels) {
+  // a B-rep proxy labels its facets with their B-rep faces: the message names those, never the
+  // proxy's own numbers (corpus/Block.brep: "faces 35345 and 35378 intersect")
+  PolyInput in = boxes({{Vec3(0, 0, 0), Vec3(1, 1, 1)}, {Vec3(0.5, 0.37, 0.61), Vec3(1.5, 1.4, 1.3)}});
+  for (int f = 0; f < 12; ++f) in.face_label.push_back(f < 6 ? "Face1" : "Face2");
+  std::string e = test::error_of([&] { prepare_model(in); });
+  EXPECT_NE(e.find("boxes: the tessellations of Face1 and Face2 intersect at ("), std::string::npos) << e;
+  std::fill(in.face_label.begin(), in.face_label.end(), "Face7");
+  e = test::error_of([&] { prepare_model(in); });
+  EXPECT_NE(e.find("boxes: Face7's tessellation folds: two of its facets intersect at ("), std::string::npos) << e;
+}
+
 TEST(SurfaceIntersections, CornerPushedThroughTheBottom) {
   PolyInput in = boxes({{Vec3(0, 0, 0), Vec3(1, 1, 1)}});
   in.nodes[7] = Vec3(0.6, 0.6, -0.5);  // the top corner (1,1,1) below the bottom face
