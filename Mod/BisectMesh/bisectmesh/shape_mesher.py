@@ -220,7 +220,12 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
         mesh.addGroupElements(g, (mine + first).tolist())
     for r in range(solids):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
-        mesh.addGroupElements(g, (np.nonzero(region == r)[0] + 1).tolist())
+        ids = (np.nonzero(region == r)[0] + 1).tolist()
+        # in slices, each one call into FreeCAD: 2e5 ids in one call took 0.5 s without a progress call
+        for start in range(0, len(ids), step):
+            mesh.addGroupElements(g, ids[start:start + step])
+            if progress is not None:
+                progress((done + faces + r + start / len(ids)) / total)
     if progress is not None:
         progress(1.0)
     return mesh

@@ -17,6 +17,7 @@
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
+#include "util/progress_poll.hpp"
 
 namespace bisect {
 namespace {
@@ -82,7 +83,11 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
   const auto t_opt = Clock::now();
   tet::TetComplex cx(b.X);
+  util::ProgressPoll build_poll(progress);  // Stop within the complex's build, as on the B-rep route
+  build_poll.at(0.8);
+  if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
   cx.build(std::move(b.tets), std::move(b.region));
+  cx.cancelled = nullptr;
   {
     // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5)
     // within their input face

@@ -35,7 +35,10 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   tag = std::move(tags);
   tag.resize(tet.size(), 0);
   q.resize(tet.size());
-  for (std::size_t t = 0; t < tet.size(); ++t) q[t] = tet_angle_key(X, tet[t]);
+  for (std::size_t t = 0; t < tet.size(); ++t) {
+    poll(t);  // 2e5 tetrahedra take 0.4 s here
+    q[t] = tet_angle_key(X, tet[t]);
+  }
   nb.assign(tet.size(), {-1, -1, -1, -1});
   alive.assign(tet.size(), 1);
   cmask_.assign(tet.size(), 0);
@@ -46,6 +49,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   open.reserve(tet.size() * 2);
   for (std::size_t t = 0; t < tet.size(); ++t)
     for (int f = 0; f < 4; ++f) {
+      if (f == 0) poll(t);
       const auto fv = face(static_cast<Index>(t), f);
       const FaceKey k = face_key(fv[0], fv[1], fv[2]);
       auto it = open.find(k);
