@@ -7,6 +7,7 @@
 // message or a FEM group names what the user sees.
 #pragma once
 #include <array>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <string>
@@ -96,11 +97,22 @@ struct BrepInput {
   std::shared_ptr<const void> shape;
 };
 
+// The groups of solids that share faces (one conforming body each: BooleanFragments, a
+// CompSolid), each in the order of `in.solids`, the groups in the order of their first solid.
+// Solids of different groups share no face: separate bodies, meshed apart.
+std::vector<std::vector<Index>> connected_solids(const BrepInput& in);
+
 // Names as FreeCAD shows them: "Face12" for face 11 (0-based), and so on.
 inline std::string face_name(Index f) { return "Face" + std::to_string(f + 1); }
 inline std::string edge_name(Index e) { return "Edge" + std::to_string(e + 1); }
 inline std::string vertex_name(Index v) { return "Vertex" + std::to_string(v + 1); }
 inline std::string solid_name(Index s) { return "Solid" + std::to_string(s + 1); }
+// A place for messages: "(x, y, z)" to 4 significant digits, enough to find it in FreeCAD.
+inline std::string point_name(const Vec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
+  return text;
+}
 // Solid s of this input as FreeCAD names it in the whole shape.
 inline std::string solid_name(const BrepInput& in, Index s) {
   return solid_name(s >= 0 && s < static_cast<Index>(in.solids.size()) && in.solids[s].number >= 0 ? in.solids[s].number : s);

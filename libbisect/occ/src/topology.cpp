@@ -138,18 +138,9 @@ void refuse_overlaps(const BrepInput& in, const OccShape& m) {
   // solids joined by shared faces (BooleanFragments, a CompSolid) are one conforming body: they
   // meet only on those faces and are not compared
   std::vector<std::size_t> group(n);
-  for (std::size_t s = 0; s < n; ++s) group[s] = s;
-  const auto root = [&](std::size_t s) {
-    while (group[s] != s) s = group[s] = group[group[s]];
-    return s;
-  };
-  std::vector<std::size_t> face_solid(static_cast<std::size_t>(m.faces.Extent()), n);
-  for (std::size_t s = 0; s < n; ++s)
-    for (Index f : in.solids[s].faces) {
-      if (face_solid[f] == n) face_solid[f] = s;
-      else group[root(s)] = root(face_solid[f]);
-    }
-  for (std::size_t s = 0; s < n; ++s) group[s] = root(s);
+  const std::vector<std::vector<Index>> bodies = connected_solids(in);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    for (Index s : bodies[b]) group[s] = b;
   for (std::size_t s = 0; s < n; ++s)
     for (std::size_t t = s + 1; t < n; ++t) {
       const BrepSolid &a = in.solids[s], &b = in.solids[t];
@@ -180,9 +171,9 @@ void refuse_overlaps(const BrepInput& in, const OccShape& m) {
       const double volume = done ? std::abs(common.Mass()) : 0;
       if (!(volume > 1e-6 * std::min(a.volume, b.volume))) continue;
       const gp_Pnt c = common.CentreOfMass();
-      char where[160];
-      std::snprintf(where, sizeof where, "a common volume of %.3g around (%.4g, %.4g, %.4g)", volume, c.X(), c.Y(), c.Z());
-      throw InputError(in.source + ": " + pair + " overlap (" + where +
+      char amount[32];
+      std::snprintf(amount, sizeof amount, "%.3g", volume);
+      throw InputError(in.source + ": " + pair + " overlap (a common volume of " + amount + " around " + point_name(Vec3(c.X(), c.Y(), c.Z())) +
                        "): meshed apart they would fill that space twice; fuse them, or make them BooleanFragments so that "
                        "they share their faces");
     }
@@ -270,7 +261,6 @@ BrepInput brep_input_from_shape(const TopoDS_Shape& shape, const std::string& so
         BRepGProp::VolumeProperties(m.solids[s], props);
         in.solids[s].volume = std::abs(props.Mass());
       });
-  if (m.solids.size() > 1) refuse_overlaps(in, m);
   for (int i = 1; i <= m.faces.Extent(); ++i) {
     const TopoDS_Face& f = TopoDS::Face(m.faces(i));
     const bool rev = reversed[i - 1] < 0 ? f.Orientation() == TopAbs_REVERSED : reversed[i - 1] > 0;
@@ -300,6 +290,7 @@ BrepInput brep_input_from_shape(const TopoDS_Shape& shape, const std::string& so
     box.Get(x0, y0, z0, x1, y1, z1);
     in.bbox_min = Vec3(x0, y0, z0), in.bbox_max = Vec3(x1, y1, z1);
   });
+  if (m.solids.size() > 1) refuse_overlaps(in, m);  // once the faces are read: the bodies are found by them
   std::shared_ptr<const OccShape> keep = model;
   in.tessellate = [keep](double linear, double angular) { return tessellate_shape(*keep, linear, angular); };
   in.shape = keep;

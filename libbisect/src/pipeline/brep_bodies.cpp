@@ -13,13 +13,8 @@
 #include "pipeline/brep_bodies.hpp"
 
 namespace bisect {
-namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// The groups of solids that share faces, each in the order of `in.solids`, in the order of
-// their first solid.
+// (brep_input.hpp) also read by libbisect/occ's check for overlapping bodies
 std::vector<std::vector<Index>> connected_solids(const BrepInput& in) {
   const Index n = static_cast<Index>(in.solids.size());
   std::vector<Index> parent(n);
@@ -43,6 +38,11 @@ std::vector<std::vector<Index>> connected_solids(const BrepInput& in) {
   }
   return groups;
 }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // `in` restricted to the solids `group` (their FreeCAD numbers kept, every face, edge and vertex
 // keeping its own), with the local sizes that name those solids renumbered.

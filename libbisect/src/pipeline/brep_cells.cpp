@@ -1,7 +1,6 @@
 #include "pipeline/brep_cells.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <numeric>
 #include <set>
@@ -34,12 +33,11 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   for (const FacePiece& piece : g.pieces) {
     brep_faces[piece.cell_out].insert(piece.face);
     if (piece.cell_in >= 0) brep_faces[piece.cell_in].insert(piece.face);
-  }
-  for (const FacePiece& piece : g.pieces)
     for (const auto& t : piece.tris) {
       piece_tris[piece.cell_out].push_back(t);
       if (piece.cell_in >= 0) piece_tris[piece.cell_in].push_back({t[0], t[2], t[1]});
     }
+  }
   std::map<Index, std::vector<Side>> cut_sides;
   std::vector<std::vector<std::pair<Index, bool>>> cuts(n);
   for (std::size_t c = 0; c < n; ++c)
@@ -89,9 +87,8 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
     job.region = d.cells[root].source_region;
     // where a user can look: the cell's centre and the B-rep faces it lies on (the cell's number
     // is the decomposition's, which no user sees)
-    char at[96];
-    std::snprintf(at, sizeof at, " at (%.4g, %.4g, %.4g)", job.centre.x(), job.centre.y(), job.centre.z());
-    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(in, d.cells[root].source_region) + at;
+    job.name = "convex cell " + std::to_string(root + 1) + " of " + solid_name(in, d.cells[root].source_region) + " at " +
+               point_name(job.centre);
     std::set<Index> faces;
     for (Index c : mem) faces.insert(brep_faces[c].begin(), brep_faces[c].end());
     if (!faces.empty()) {

@@ -1,7 +1,6 @@
 #include "pipeline/brep_order2.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -182,9 +181,7 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
       // straight, its Jacobian is the corners' own: a tetrahedron flat to round-off (Cone_1's apex)
       Vec3 centre = Vec3::Zero();
       for (int k = 0; k < 4; ++k) centre += out.nodes[out.tet_node(t, k)] / 4;
-      char at[96];
-      std::snprintf(at, sizeof at, " (%.4g, %.4g, %.4g)", centre.x(), centre.y(), centre.z());
-      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at" + at +
+      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at " + point_name(centre) +
                          " is nearly flat: its 10-node Jacobian is not positive even with straight edges (a defect of the mesher)");
     }
   return out;
