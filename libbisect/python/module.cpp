@@ -359,13 +359,13 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "validate",
-      [](const NodeArray& nodes, const IndexArray& tets, const py::object& node_ids, const py::object& tet_ids) {
+      [](const NodeArray& nodes, const IndexArray& tets, const py::object& node_ids, const py::object& tet_ids,
+         const py::object& progress) {
         const TetMesh mesh = mesh_from_arrays(nodes, tets, py::none(), node_ids, tet_ids);
         std::vector<Violation> found;
-        {
-          py::gil_scoped_release release;
-          found = validate(mesh);
-        }
+        ProgressBridge bridge(progress);
+        const std::function<bool(double)> callback = bridge.callback();
+        bridge.run([&] { found = validate(mesh, callback); });
         py::list out;
         for (const Violation& v : found) {
           py::dict d;
@@ -377,7 +377,9 @@ PYBIND11_MODULE(_core, m) {
         return out;
       },
       py::arg("nodes"), py::arg("tets"), py::arg("node_ids") = py::none(), py::arg("tet_ids") = py::none(),
-      "Every violation of the mesh invariants as dicts {kind, ids, message}; empty when valid.");
+      py::arg("progress") = py::none(),
+      "Every violation of the mesh invariants as dicts {kind, ids, message}; empty when valid. "
+      "progress(fraction) -> bool|None is called on this thread at most every 50 ms; False raises Cancelled.");
 
   m.def(
       "read_mesh",

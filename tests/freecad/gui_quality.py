@@ -29,6 +29,16 @@ from gui_harness import ARTIFACTS, check, command_state, log, settle, start, wid
 COMMAND = "BisectMesh_Quality"
 
 
+def wait_for(condition, what, timeout=120):
+    """The panel computes in job threads: turns the event loop until ``condition()``."""
+    import time
+
+    start_time = time.time()
+    while not condition():
+        check(time.time() - start_time < timeout, "waiting for %s" % what)
+        settle(50)
+
+
 def save_view(name):
     view = FreeCADGui.ActiveDocument.ActiveView
     view.viewIsometric()
@@ -63,9 +73,10 @@ def run():
 
     widen_combo_view(440)
     FreeCADGui.runCommand("BisectMesh_Quality")
-    settle(500)
+    settle(100)
     panel = quality_panel.QualityPanel.open_panel
     check(panel is not None and FreeCADGui.Control.activeDialog(), "task panel open")
+    wait_for(lambda: not panel.computing(), "the report")
     report = panel.report
     check(report is not None and report["valid"] is True, "report valid: %s" % (report and report["valid"]))
     check(report["order"] == 2 and report["tets"] == mesh.FemMesh.VolumeCount, "report counts")
@@ -95,11 +106,13 @@ def run():
               "the quality call went through the console (macro recording)")
 
     panel.colour.setChecked(True)
+    wait_for(panel.colouring_done, "the colours")
     settle()
     save_view("quality_colours.png")
     panel.measure.setCurrentIndex(1)  # recolour by minimum dihedral angle
     panel.threshold.setValue(25.0)  # the Gmsh mesh has no element below 10 degrees
     panel.mark.setChecked(True)
+    wait_for(panel.colouring_done, "the marks")
     settle()
     save_view("quality_marked.png")
     FreeCADGui.getMainWindow().grab().save(os.path.join(ARTIFACTS, "quality_panel.png"))
@@ -131,8 +144,9 @@ def run():
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(obj)
     FreeCADGui.runCommand("BisectMesh_Quality")
-    settle(500)
+    settle(100)
     panel = quality_panel.QualityPanel.open_panel
+    wait_for(lambda: not panel.computing(), "the report")
     check(panel.report["valid"] is False, "hand-made mesh reported invalid")
     kinds = [(v["kind"], v["ids"]) for v in panel.report["violations"]]
     check(("inverted_tet", [bad]) in kinds, "inverted element %d named: %s" % (bad, kinds[:3]))

@@ -241,6 +241,21 @@ class MeshObjectTest(unittest.TestCase):
         self.assertFalse(obj.NeedsRemesh)
         self.assertEqual(obj.FemMesh.BoundBox.XMax, 1000.0)
 
+    def test_kept_arrays_serve_quality_until_the_mesh_changes(self):
+        obj = bisectmesh.make_mesh_object(self.doc, self.part, elements=2000, order=1)
+        bisectmesh.remesh(obj)
+        kept = obj.Proxy.mesh_arrays()
+        self.assertIsNotNone(kept)
+        self.assertIs(bisectmesh.mesh_arrays(obj), kept)  # no reading of the FemMesh
+        self.assertEqual(len(kept.tets), obj.FemMesh.VolumeCount)
+        self.assertEqual(bisectmesh.quality(obj), bisectmesh.quality(obj.FemMesh))
+        # any other assignment of the FemMesh drops them: the arrays are read from the new mesh
+        other = obj.FemMesh.copy()
+        other.addNode(500.0, 0.0, 0.0, other.NodeCount + 500)
+        obj.FemMesh = other
+        self.assertIsNone(obj.Proxy.mesh_arrays())
+        self.assertEqual(len(bisectmesh.mesh_arrays(obj).nodes), other.NodeCount)
+
     def test_save_and_reopen(self):
         import ObjectsFem
 

@@ -166,6 +166,67 @@ def copy_by_hand(source, node_offset=1000, element_offset=50000, swap_in=None):
     return femmesh
 
 
+class GeneratorArraysTest(unittest.TestCase):
+    """The quality of a BisectMesh mesh computed from the generator's own arrays (the panel's
+    check and the quality panel never read the FemMesh back): the same report as from the
+    FemMesh, a progress that ends at 1 and can stop the check."""
+
+    @classmethod
+    def setUpClass(cls):
+        from bisectmesh import shape_mesher
+
+        cls.doc = FreeCAD.newDocument("BisectMeshArraysTest")
+        cls.part = fc_helpers.box_minus_cylinder(cls.doc)
+        cls.report = {}
+        cls.mesh = shape_mesher.mesh_shape(cls.part.Shape, elements=6000, order=2, report=cls.report)
+
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.doc.Name)
+
+    def test_arrays_give_the_femmesh_report(self):
+        arrays = self.report["arrays"]
+        read = bisectmesh.mesh_arrays(self.mesh)
+        np.testing.assert_array_equal(arrays.tets, read.tets)
+        np.testing.assert_array_equal(arrays.node_ids, read.node_ids)
+        np.testing.assert_array_equal(arrays.tet_ids, read.tet_ids)
+        np.testing.assert_allclose(arrays.nodes, read.nodes)
+        self.assertEqual(bisectmesh.quality(arrays), bisectmesh.quality(self.mesh))
+
+    def test_progress_ends_at_one_and_stops_the_check(self):
+        seen = []
+        report = bisectmesh.quality(self.report["arrays"], progress=seen.append)
+        self.assertTrue(report["valid"])
+        self.assertEqual(seen, sorted(seen))
+        self.assertEqual((seen[0], seen[-1]), (0.0, 1.0))
+        # Stop inside the validator: its first report past the summary says stop
+        with self.assertRaises(bisectmesh.core().Cancelled):
+            bisectmesh.quality(self.report["arrays"], progress=lambda x: x <= 0.2)
+
+    def test_boundary_nodes_are_the_surface_triangles_nodes(self):
+        arrays = self.report["arrays"]
+        faces = [g for g in self.mesh.Groups if self.mesh.getGroupName(g).endswith("_Nodes")]
+        on_faces = set()
+        for g in faces:
+            on_faces.update(self.mesh.getGroupElements(g))
+        rows = femmesh_arrays.boundary_nodes(arrays)
+        self.assertEqual(set(arrays.node_ids[rows].tolist()), on_faces)
+
+    def test_mesh_part_checks_within_its_progress(self):
+        from bisectmesh import mesh_object
+
+        seen, kept = [], {}
+        femmesh, result = mesh_object.mesh_part(self.part, elements=3000, order=1, check=True, report=kept,
+                                                progress=seen.append)
+        self.assertIs(result["quality"]["valid"], True)
+        self.assertEqual(result["violations"], [])
+        self.assertEqual(seen, sorted(seen))
+        self.assertEqual(seen[-1], 1.0)
+        self.assertEqual(len(kept["arrays"].tets), femmesh.VolumeCount)
+        with self.assertRaises(bisectmesh.core().Cancelled):  # Stop during the check
+            mesh_object.mesh_part(self.part, elements=3000, order=1, check=True, progress=lambda x: x < 0.97)
+
+
 class HandMadeMeshTest(unittest.TestCase):
 
     @classmethod

@@ -211,7 +211,12 @@ class ColouringTest(unittest.TestCase):
         self.assertTrue(png.startswith(b"\x89PNG"))
         with open(os.path.join(fc_helpers.artifacts_dir(), "quality_histograms.png"), "wb") as out:
             out.write(png)
-        self.assertTrue(histograms.legend_png().startswith(b"\x89PNG"))
+        from bisectmesh.gui import colouring
+
+        legend = colouring.legend_rgb(240, 14)
+        self.assertEqual(legend.shape, (14, 240, 3))
+        self.assertEqual(tuple(legend[0, 0]), (255, 0, 0))  # poor: red
+        self.assertEqual(tuple(legend[0, -1]), (0, 255, 0))  # good: green
 
 
 if __name__ == "__main__":

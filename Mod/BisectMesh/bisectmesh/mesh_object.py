@@ -138,14 +138,26 @@ class MeshObject:
         """Checks the inputs; never meshes (see the module's docstring)."""
         check_inputs(obj)
 
-    def adopt(self, obj, femmesh, result, key=None):
+    def adopt(self, obj, femmesh, result, key=None, arrays=None):
         """Takes a mesh made from the object's current inputs (by :func:`remesh`, or by the task
-        panel in a worker thread); ``key``: their fingerprint, if already known."""
+        panel in a worker thread); ``key``: their fingerprint, if already known; ``arrays``: the
+        generator's MeshArrays of it, kept in memory (not in the document) so that quality and
+        colouring need not read the FemMesh back (seconds at 10^6 elements)."""
+        self.arrays = None
         obj.FemMesh = femmesh
+        self.arrays = arrays
         set_results(obj, result)
         obj.MeshedInputs = key if key is not None else input_key(obj)
         mark_current(obj)
         obj.purgeTouched()
+
+    def onChanged(self, obj, prop):
+        if prop == "FemMesh":  # set by anything but adopt: the kept arrays are another mesh's
+            self.arrays = None
+
+    def mesh_arrays(self):
+        """The MeshArrays of the object's FemMesh when this session made it, else None."""
+        return getattr(self, "arrays", None)
 
     # FreeCAD pickles the proxy into the document: there is nothing to keep.
     def __getstate__(self):
@@ -256,14 +268,16 @@ def remesh(obj, progress=None):
     key = input_key(obj)
     part = obj.Part
     try:
-        femmesh, result = mesh_part(part, shape=part_shape(part), progress=progress, **mesh_arguments(obj))
+        report = {}
+        femmesh, result = mesh_part(part, shape=part_shape(part), progress=progress, report=report,
+                                    **mesh_arguments(obj))
     except ValueError as err:
         raise ValueError("%s: %s" % (part.Label, err)) from err
     except RuntimeError as err:
         if type(err).__name__ == "Cancelled":
             raise
         raise RuntimeError("%s: %s" % (part.Label, err)) from err
-    obj.Proxy.adopt(obj, femmesh, result, key)
+    obj.Proxy.adopt(obj, femmesh, result, key, arrays=report.get("arrays"))
     return result
 
 
@@ -324,7 +338,8 @@ def part_shape(part):
 
 def mesh_part(part, elements=None, size=None, order=2, use_hints=False, optimize=3, smooth=3,
               progress=None, shape=None, resolution=None, min_size=0.0, max_size=0.0,
-              curvature_elements=12, chord_deviation=0.0, regions=None, threads=None):
+              curvature_elements=12, chord_deviation=0.0, regions=None, threads=None, check=False,
+              report=None):
     """Meshes the solids of ``part`` (a document object with a Shape) the way a BisectMesh object
     does; returns (Fem.FemMesh, result) with result a JSON-friendly dict of counts, stage times
     and the generator's quality summary.
@@ -334,6 +349,11 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=False, optimize
     threads            generator threads; None: the preferences' (0: one per core)
     shape, resolution  already read from ``part`` (the task panel reads them in the GUI thread and
                        meshes in another); by default read here.
+    check              also validate the mesh (bisectmesh.quality on the generator's arrays, a
+                       second or two at 10^6 elements): result["quality"] then holds the
+                       report's summary and "valid", result["violations"] the first 20 messages;
+                       ``progress`` covers the check too
+    report             a dict that receives "arrays": the mesh's MeshArrays (for adopt)
     """
     from . import arguments, preferences, shape_mesher
 
@@ -350,16 +370,35 @@ def mesh_part(part, elements=None, size=None, order=2, use_hints=False, optimize
         resolution = shape_mesher.view_resolution(part)
     if not use_hints:
         resolution = None
+    check = arguments.flag("check", check)
+    caller_report = arguments.optional_dict("report", report)
     report = {}
     start = time.perf_counter()
+    meshing_share = 1.0 - shape_mesher.progress_shares(order, check)[2] if check else 1.0
+    meshing_progress = progress
+    if progress is not None and check:
+        meshing_progress = lambda fraction: progress(meshing_share * fraction)  # noqa: E731
     femmesh = shape_mesher.mesh_shape(shape, elements=elements, size=size, order=order,
                                       resolution=resolution, hints=use_hints, optimize=optimize,
-                                      smooth=smooth, progress=progress, report=report, threads=threads,
+                                      smooth=smooth, progress=meshing_progress, report=report, threads=threads,
                                       min_size=min_size, max_size=max_size,
                                       curvature_elements=curvature_elements,
                                       chord_deviation=chord_deviation, regions=list(regions or []))
     seconds = time.perf_counter() - start
-    return femmesh, result_of(femmesh, report, seconds, order)
+    result = result_of(femmesh, report, seconds, order)
+    if check:
+        import bisectmesh
+
+        check_progress = None
+        if progress is not None:
+            check_progress = lambda fraction: progress(meshing_share + (1 - meshing_share) * fraction)  # noqa: E731
+        found = bisectmesh.quality(report["arrays"], progress=check_progress)
+        result["quality"] = {k: v for k, v in found.items()
+                             if k not in ("measures", "violations", "per_element", "skipped_volumes")}
+        result["violations"] = [v["message"] for v in found["violations"][:20]]
+    if caller_report is not None:
+        caller_report["arrays"] = report["arrays"]
+    return femmesh, result
 
 
 def result_of(femmesh, report, seconds, order):

@@ -1,6 +1,7 @@
 // The mesh validator: every violation of the invariants of ARCHITECTURE.md §3, with ids.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,8 @@ struct Violation {
 double tet10_jacobian_ratio(const TetMesh& mesh, std::size_t t);
 
 // All violations, in a stable order (by kind, then by id). An empty result means a valid mesh.
-// Mid-edge nodes of order-2 meshes count as used.
-std::vector<Violation> validate(const TetMesh& mesh);
+// Mid-edge nodes of order-2 meshes count as used. progress (optional) is called with the
+// fraction done, at most every 50 ms; when it returns false the check stops with Cancelled.
+std::vector<Violation> validate(const TetMesh& mesh, const std::function<bool(double)>& progress = {});
 
 }  // namespace bisect

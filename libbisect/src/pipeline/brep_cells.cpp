@@ -24,7 +24,7 @@ struct Side {
 
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    bool last_resort_allowed, BrepCellCounts* counts, const std::function<bool()>& cancelled) {
+                                    bool last_resort_allowed, BrepCellCounts* counts, const std::function<bool(double)>& cancelled) {
   const std::size_t n = d.cells.size();
   const PolyhedralModel& m = d.model;
   // per cell: its face pieces' triangles (outward) and its cut faces with their two sides
@@ -114,7 +114,8 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   std::vector<char> last_resort(n, 0);  // cells filled in the proxy keeping fixed inverted tetrahedra
   std::vector<char> recover(n, 0);      // cells filled by boundary recovery
   for (std::size_t c = 0; c < n; ++c) {
-    if (cancelled && cancelled()) throw Cancelled();  // the trial fillings below add up: Stop within them
+    // the trial fillings below add up: Stop within them
+    if (cancelled && cancelled(static_cast<double>(c) / static_cast<double>(n))) throw Cancelled();
     if (group[c] != static_cast<Index>(c)) continue;
     const std::vector<Index> group_before = group;
     const std::vector<std::vector<Index>> members_before = members;

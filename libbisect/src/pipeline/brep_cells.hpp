@@ -34,10 +34,11 @@ struct BrepCellCounts {
 };
 
 // One job per cell or group of joined cells. X, P: the nodes' true and proxy positions. Throws
-// MeshingError naming the cell when none of the four ways works.
+// MeshingError naming the cell when none of the four ways works. cancelled(fraction of the
+// cells done) is asked before each cell; true stops with Cancelled.
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
                                     bool last_resort_allowed, BrepCellCounts* counts,
-                                    const std::function<bool()>& cancelled = {});
+                                    const std::function<bool(double)>& cancelled = {});
 
 }  // namespace bisect::pipeline

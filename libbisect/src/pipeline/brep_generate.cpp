@@ -29,6 +29,15 @@
 namespace bisect {
 namespace {
 
+// Where each stage ends on the progress bar, so that the bar moves with the time (issue 19):
+// measured on a filleted block with a hole at 2e5 tetrahedra, tetra4 and tetra10 (the stage
+// times of tests/freecad/gui_stall.py's run; the complex's build and the order-2 assembly
+// report no steps of their own).
+struct BarShares {
+  double decomposed, placed, jobs, filled, built, optimized;
+};
+constexpr BarShares kBar{0.02, 0.16, 0.26, 0.36, 0.52, 0.88};
+
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -220,7 +229,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     try {
     const auto t_dec = Clock::now();
     std::function<bool(double)> dec_progress;
-    if (progress) dec_progress = [&](double x) { return progress(0.1 * x); };
+    if (progress) dec_progress = [&](double x) { return progress(kBar.decomposed * x); };
     const Decomposed dc = decompose_brep(in, opt, angle, dec_progress);
     st.init_geom = dc.d.stats.prepare_seconds;
     st.bisect = since(t_dec) - st.init_geom;
@@ -249,12 +258,15 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
         const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls, &sampling);
         if (opt.max_elements > 0 && filling == 0 && round == 0 && h.smallest() < h.base())  // walls or features: bounded first
           pipeline::check_element_bound(field_count(in, dc.d, h, dc.proxy.tess), opt, in.source, element_bound_why(sizes), "the size field's samples over the cells");
-        // the search's rounds share the bar from 0.1 to 0.35 (most end within three)
+        // the search's rounds share the placement's part of the bar (most end within three)
+        const auto placed_at = [&](double rounds) {
+          return kBar.decomposed + (kBar.placed - kBar.decomposed) * std::min(1.0, rounds / 3);
+        };
         std::function<bool(double)> place_progress;
-        if (progress) place_progress = [&](double x) { return progress(0.1 + 0.25 * std::min(1.0, (round + x) / 3)); };
+        if (progress) place_progress = [&](double x) { return progress(placed_at(round + x)); };
         pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads, place_progress);
         st.gen_nodes += since(t_nodes);
-        if (progress && !progress(0.35)) throw Cancelled();
+        if (progress && !progress(placed_at(round + 1))) throw Cancelled();
         const double predicted = scale * (6.2 * static_cast<double>(trial.inside_nodes()) + 2.65 * static_cast<double>(trial.boundary_nodes()));
         const double miss = std::abs(predicted - want);
         if (miss < placed_miss) placed_miss = miss, placed = std::move(trial), placed_np = np;
@@ -276,14 +288,20 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
         pipeline::check_element_bound(predicted, opt, in.source, element_bound_why(sizes));
       }
       const auto t_fill = Clock::now();
-      std::function<bool(double)> fill_progress;
-      if (progress) fill_progress = [&](double x) { return progress(0.35 + 0.45 * x); };
+      std::function<bool(double)> fill_progress, jobs_progress;
+      if (progress) {
+        jobs_progress = [&](double x) { return progress(kBar.placed + (kBar.jobs - kBar.placed) * x); };
+        fill_progress = [&](double x) { return progress(kBar.jobs + (kBar.filled - kBar.jobs) * x); };
+      }
       std::vector<Vec3> X = placed.X;
       pipeline::BrepCellCounts cell_counts;
-      util::ProgressPoll jobs_poll(fill_progress);
+      util::ProgressPoll jobs_poll(jobs_progress);
       const std::vector<pipeline::CellJob> jobs =
           pipeline::brep_cell_jobs(in, dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, last_resort_allowed,
-                                   &cell_counts, [&jobs_poll] { return jobs_poll.cancelled(); });
+                                   &cell_counts, [&jobs_poll](double x) {
+                                     jobs_poll.at(x);
+                                     return jobs_poll.cancelled();
+                                   });
       pipeline::FilledCells cells = pipeline::fill_cell_jobs(X, jobs, opt.delaunay_insertion, opt.threads, fill_progress, &placed.P);
       st.gen_tets += since(t_fill);
       ++st.fillings;
@@ -325,7 +343,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   tet::TetComplex cx(best.X);
   // Stop within the complex's build (0.4 s at 2e5 tetrahedra, no progress call before)
   util::ProgressPoll build_poll(progress);
-  build_poll.at(0.8);
+  build_poll.at(kBar.filled);
   if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
   cx.build(std::move(filled.tets), std::move(filled.region));
   cx.cancelled = nullptr;
@@ -338,13 +356,16 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   cx.constrain(held);
   cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
   std::function<bool(double)> optimize_progress;
-  if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.17 * x); };
+  if (progress) optimize_progress = [&](double x) { return progress(kBar.built + (kBar.optimized - kBar.built) * x); };
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best.X, best.on_boundary, opt.optimize, optimize_progress);
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
   st.optimize = since(t_opt);
-  if (progress && !progress(0.97)) throw Cancelled();
-  TetMesh out = pipeline::assemble_brep_mesh(best.grids, cx, best.X, in, opt.order, &st.straightened_edges);
+  if (progress && !progress(kBar.optimized)) throw Cancelled();
+  util::ProgressPoll assembly_poll(progress);
+  assembly_poll.at(kBar.optimized);
+  TetMesh out = pipeline::assemble_brep_mesh(best.grids, cx, best.X, in, opt.order, &st.straightened_edges,
+                                             [&assembly_poll] { return assembly_poll.cancelled(); });
   // no mesh leaves inside out: a stage's slip is an error naming the place, not a bad mesh
   for (std::size_t t = 0; t < out.num_tets(); ++t) {
     const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],

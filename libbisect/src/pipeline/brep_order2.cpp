@@ -46,7 +46,11 @@ Index common_edge(const BrepInput& in, const PointOn& a, const PointOn& b, doubl
 }  // namespace
 
 TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const std::vector<Vec3>& X, const BrepInput& in, int order,
-                           std::int64_t* straightened) {
+                           std::int64_t* straightened, const std::function<bool()>& cancelled) {
+  // Stop within the order-2 passes over every element (0.9 s at 2e5 tetra10)
+  const auto poll = [&cancelled](std::size_t t) {
+    if ((t & 4095) == 4095 && cancelled && cancelled()) throw Cancelled();
+  };
   const std::vector<tet::Tet> tets = cx.tets();
   const std::vector<Index> region = cx.tags();
   TetMesh out;
@@ -84,6 +88,7 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
   std::vector<Vec3> straight = out.nodes;
   std::vector<char> curved(n_nodes, 0);
   for (std::size_t f = 0; f < refs.size(); ++f) {
+    poll(f);
     const FacePiece& piece = g.pieces[refs[f].piece];
     const auto& uv = piece.tri_uv[refs[f].k];
     const ParametricSurface& surf = *in.faces[piece.face].surface;
@@ -118,8 +123,10 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
   };
   constexpr double kMinRatio = 1e-3;  // a margin over zero: CalculiX's own check and round-off
   std::vector<Index> bad;
-  for (std::size_t t = 0; t < nt; ++t)
+  for (std::size_t t = 0; t < nt; ++t) {
+    poll(t);
     if (tet10_jacobian_ratio(out, t) <= kMinRatio) bad.push_back(static_cast<Index>(t));
+  }
   for (int round = 0; round < 4 && !bad.empty(); ++round) {
     std::vector<Index> still;
     for (Index t : bad) {
@@ -164,7 +171,7 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
   // straight, so this ends)
   for (bool changed = true; changed;) {
     changed = false;
-    for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t t = 0; t < nt; ++t, poll(t))
       for (int pass = 0; pass < 2 && tet10_jacobian_ratio(out, t) <= kMinRatio; ++pass)
         for (int i = 4; i < 10; ++i) {
           const Index m = out.tet_node(t, i);
@@ -176,7 +183,7 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
           }
         }
   }
-  for (std::size_t t = 0; t < nt; ++t)
+  for (std::size_t t = 0; t < nt; poll(t), ++t)
     if (!(tet10_jacobian_ratio(out, t) > 0)) {
       // straight, its Jacobian is the corners' own: a tetrahedron flat to round-off (Cone_1's apex)
       Vec3 centre = Vec3::Zero();

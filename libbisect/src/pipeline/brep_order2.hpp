@@ -10,6 +10,7 @@
 // counted in the stats. No element leaves with a non-positive Jacobian.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "bisect/brep_input.hpp"
@@ -21,7 +22,8 @@ namespace bisect::pipeline {
 
 // The used nodes in their order, the tetrahedra with their solids, the face pieces' triangles
 // tagged with their B-rep face (interfaces once), and for order 2 the curved mid-nodes.
+// cancelled (optional) is asked every 4096 elements; true stops with Cancelled.
 TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const std::vector<Vec3>& X, const BrepInput& in, int order,
-                           std::int64_t* straightened);
+                           std::int64_t* straightened, const std::function<bool()>& cancelled = {});
 
 }  // namespace bisect::pipeline

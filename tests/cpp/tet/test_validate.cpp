@@ -2,10 +2,13 @@
 // broken mesh and reported with the right ids.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <limits>
 
 #include <string>
 
+#include "bisect/errors.hpp"
 #include "bisect/validate.hpp"
 #include "tet/tet_test_meshes.hpp"
 
@@ -45,6 +48,21 @@ TEST(Validate, Order2CubeMeshIsValid) {
   // Mid-edge nodes are used only in slots 4..9: they must count as used.
   const auto v = validate(test::to_order2(test::cube_mesh(2)));
   EXPECT_TRUE(v.empty()) << describe(v);
+}
+
+TEST(Validate, ReportsProgressAndStops) {
+  // cube_mesh(20): 48,000 tetrahedra, order 2: the passes report in order, from 0 to 1
+  const TetMesh m = test::to_order2(test::cube_mesh(20));
+  std::vector<double> seen;
+  const std::function<bool(double)> record = [&seen](double x) { return seen.push_back(x), true; };
+  EXPECT_TRUE(validate(m, record).empty());
+  ASSERT_GE(seen.size(), 9u);  // one report per pass and the end, at least
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  // a Stop inside: the check ends with Cancelled, not with a verdict
+  const std::function<bool(double)> stop_after_elements = [](double x) { return x < 0.1; };
+  EXPECT_THROW(validate(m, stop_after_elements), Cancelled);
 }
 
 TEST(Validate, InvertedTet) {

@@ -8,11 +8,16 @@ its triangle-to-element table has empty slots. The per-node colouring covers eve
 so we colour nodes, each with the worst quality among the tetrahedra that use it; a poor
 element then shows as a red patch around its nodes.
 
-``setNodeColorByScalars`` scales its colours to the data's own maximum, so the same colour would
-mean different qualities on different meshes; we map qualities to colours ourselves on a fixed
-scale and pass them through ``NodeColor``.
+Setting ``NodeColor`` takes time quadratic in the nodes in FreeCAD 0.20 (PyCXX's dict iteration
+rebuilds the key list at every step: 58,000 nodes took 33 s, 2e5 tetra10 never finished), so we
+colour through ``setNodeColorByScalars``, which reads two lists. It scales its colours to the
+data's maximum: we pass a "badness" 1 - q on a fixed scale and pin the maximum at 1 with node id 0,
+which FreeCAD never draws (its node ids start at 1). Its colours run green (0) through yellow
+(0.5) to red (1); :func:`ramp` gives the same for the legend and the histograms. Only the nodes
+of the boundary surface are passed: the view draws no other.
 
-The colour computation is plain NumPy and runs headless; only :func:`colour_by_quality` and
+The colour computation is plain NumPy and runs headless (or in a worker thread: see
+:func:`colour_values`); only :func:`apply_colours`, :func:`colour_by_quality` and
 :func:`reset_colours` touch a view provider.
 """
 
@@ -47,25 +52,60 @@ def normalized(measure, values):
 
 
 def ramp(q):
-    """Colours for qualities 0..1: red (poor) through yellow to green (good); #q by 3 floats."""
+    """Colours for qualities 0..1: red (poor) through yellow to green (good); #q by 3 floats.
+    The colours FreeCAD's setNodeColorByScalars gives a badness 1 - q on a 0..1 scale."""
     q = np.clip(np.asarray(q, dtype=np.float64), 0.0, 1.0)
     red = np.where(q < 0.5, 1.0, 2.0 * (1.0 - q))
     green = np.where(q < 0.5, 2.0 * q, 1.0)
     blue = np.zeros_like(q)
-    # A touch of shading keeps the best elements from glaring.
-    scale = 0.85 + 0.15 * (1.0 - q)
-    return np.stack([red * scale, green * 0.8 * scale, blue], axis=-1)
+    return np.stack([red, green, blue], axis=-1)
 
 
-def node_colours(arrays, element_values, measure):
-    """{FreeCAD node id: (r, g, b)} from per-element values of ``measure``, each node taking
-    the worst quality of the tetrahedra that use it (mid-edge nodes included)."""
-    from ..femmesh_arrays import node_minimum
+def legend_rgb(width, height):
+    """The colour bar, poor (left) to good (right), as a height x width x 3 uint8 array."""
+    row = np.round(255 * ramp(np.linspace(0.0, 1.0, width))).astype(np.uint8)
+    return np.ascontiguousarray(np.broadcast_to(row, (height, width, 3)))
+
+
+def node_quality(arrays, element_values, measure, surface_only=False):
+    """(FreeCAD node ids, quality 0..1): each node takes the worst quality of the tetrahedra that
+    use it (mid-edge nodes included). surface_only: the nodes of the boundary surface alone."""
+    from ..femmesh_arrays import boundary_nodes, node_minimum
 
     q = normalized(measure, element_values)
     node_ids, worst = node_minimum(arrays, q)
+    if surface_only:
+        keep = np.isin(node_ids, arrays.node_ids[boundary_nodes(arrays)], assume_unique=True)
+        node_ids, worst = node_ids[keep], worst[keep]
+    return node_ids, worst
+
+
+def node_colours(arrays, element_values, measure, surface_only=False):
+    """{FreeCAD node id: (r, g, b)} of :func:`node_quality` through :func:`ramp`."""
+    node_ids, worst = node_quality(arrays, element_values, measure, surface_only)
     colours = ramp(worst)
     return {int(i): tuple(float(c) for c in rgb) for i, rgb in zip(node_ids, colours)}
+
+
+def colour_values(mesh, measure="gamma"):
+    """What :func:`apply_colours` draws for ``mesh`` (a FEM mesh object or its MeshArrays):
+    (node ids, badness) as lists, boundary nodes only. No view provider is touched: this may run
+    in a worker thread."""
+    import bisectmesh
+    from ..femmesh_arrays import MeshArrays
+
+    arrays = mesh if isinstance(mesh, MeshArrays) else bisectmesh.mesh_arrays(mesh)
+    if len(arrays.tets) == 0:
+        raise ValueError("%s has no tetrahedra to colour" % getattr(mesh, "Label", "the mesh"))
+    _, measures = bisectmesh.element_quality(None, arrays)
+    node_ids, worst = node_quality(arrays, measures[measure], measure, surface_only=True)
+    return node_ids.tolist(), (1.0 - worst).tolist()
+
+
+def apply_colours(obj, node_ids, badness):
+    """Colours ``obj``'s nodes in the 3D view (see the module's docstring); returns the count."""
+    obj.ViewObject.setNodeColorByScalars(list(node_ids) + [0], list(badness) + [1.0])
+    return len(node_ids)
 
 
 def worst_element_nodes(arrays, element_values, measure, threshold):
@@ -78,33 +118,36 @@ def worst_element_nodes(arrays, element_values, measure, threshold):
     return [int(i) for i in arrays.node_ids[rows]]
 
 
-def colour_by_quality(obj, measure="gamma"):
-    """Colours the FEM mesh object ``obj`` in the 3D view by ``measure`` (see SCALES).
-    Returns the number of nodes coloured."""
+def poor_element_nodes(mesh, measure="dihedral_min", threshold=10.0):
+    """:func:`worst_element_nodes` of ``mesh`` (a FEM mesh object, FemMesh or MeshArrays); touches
+    no view provider (may run in a worker thread)."""
     import bisectmesh
+    from ..femmesh_arrays import MeshArrays
 
-    arrays = bisectmesh.mesh_arrays(obj)
-    if len(arrays.tets) == 0:
-        raise ValueError("%s has no tetrahedra to colour" % obj.Label)
-    _, measures = bisectmesh.element_quality(obj, arrays)
-    colours = node_colours(arrays, measures[measure], measure)
-    obj.ViewObject.NodeColor = colours
-    return len(colours)
+    arrays = mesh if isinstance(mesh, MeshArrays) else bisectmesh.mesh_arrays(mesh)
+    _, measures = bisectmesh.element_quality(None, arrays)
+    return worst_element_nodes(arrays, measures[measure], measure, threshold)
 
 
-def mark_poor_elements(obj, measure="dihedral_min", threshold=10.0):
-    """Shows the nodes of the elements worse than ``threshold`` as highlighted points, so that
-    poor elements inside the mesh can be seen too. Returns the number of nodes marked."""
-    import bisectmesh
-
-    arrays = bisectmesh.mesh_arrays(obj)
-    _, measures = bisectmesh.element_quality(obj, arrays)
-    nodes = worst_element_nodes(arrays, measures[measure], measure, threshold)
+def apply_marks(obj, nodes):
+    """Shows ``nodes`` (FreeCAD ids) as highlighted points, or none; returns the count."""
     if nodes:
         obj.ViewObject.HighlightedNodes = nodes
     else:
         obj.ViewObject.resetHighlightedNodes()
     return len(nodes)
+
+
+def colour_by_quality(obj, measure="gamma"):
+    """Colours the FEM mesh object ``obj`` in the 3D view by ``measure`` (see SCALES), blocking.
+    Returns the number of nodes coloured (those of the boundary surface)."""
+    return apply_colours(obj, *colour_values(obj, measure))
+
+
+def mark_poor_elements(obj, measure="dihedral_min", threshold=10.0):
+    """Shows the nodes of the elements worse than ``threshold`` as highlighted points, so that
+    poor elements inside the mesh can be seen too. Returns the number of nodes marked."""
+    return apply_marks(obj, poor_element_nodes(obj, measure, threshold))
 
 
 def reset_colours(obj):

@@ -44,18 +44,3 @@ def histogram_png(report, panels=DEFAULT_PANELS, width_px=380, height_px=170, dp
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     return buffer.getvalue()
-
-
-def legend_png(width_px=240, height_px=14):
-    """A small colour bar, poor (left) to good (right)."""
-    from matplotlib.figure import Figure
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    fig = Figure(figsize=(width_px / 100.0, height_px / 100.0), dpi=100)
-    FigureCanvasAgg(fig)
-    ax = fig.add_axes([0, 0, 1, 1])
-    ax.imshow(ramp(np.linspace(0.0, 1.0, 256))[np.newaxis, :, :], aspect="auto")
-    ax.set_axis_off()
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=100)
-    return buffer.getvalue()

@@ -34,7 +34,7 @@ class MeshPanel(MeshForm):
         self.mesh_name = mesh_obj.Name if mesh_obj is not None else None
         self.editing = mesh_obj is not None  # opened by the object's setEdit
         self.worker = None
-        self.computed = None  # (key, femmesh, result) of the last finished meshing
+        self.computed = None  # (key, femmesh, result, arrays) of the last finished meshing
         self.result = None
         self.error = None
         self.closed = False
@@ -91,7 +91,10 @@ class MeshPanel(MeshForm):
         self._running_key = self._key()
         self.worker = MeshWorker(self, shape, self.arguments(), self.resolution)
         self.worker.progressed.connect(self._progressed)
-        self.worker.stage.connect(self._stage)
+        # where the generator's share of the bar ends, and the FemMesh build's (the check follows)
+        core, femmesh, _ = shape_mesher.progress_shares(self.worker.arguments["order"], check=True)
+        self._stage_ends = ((core, "Generating the mesh\u2026 %p%"), (core + femmesh, "Building the FEM mesh\u2026 %p%"),
+                            (2.0, "Checking the mesh\u2026 %p%"))
         self._set_running(True)
         self.progress.setValue(0)
         self.progress.setFormat("%p%")
@@ -115,12 +118,7 @@ class MeshPanel(MeshForm):
         if self.closed:
             return
         self.progress.setValue(int(round(100 * min(max(fraction, 0.0), 1.0))))
-        if fraction >= 1.0:
-            self.progress.setFormat("Building the FEM mesh\u2026")
-
-    def _stage(self, text):
-        if not self.closed:
-            self.progress.setFormat(text)
+        self.progress.setFormat(next(text for end, text in self._stage_ends if fraction < end))
 
     def _worker_done(self, worker):
         if worker is not self.worker:
@@ -142,7 +140,7 @@ class MeshPanel(MeshForm):
             self._fail(worker.error)
             return
         self.progress.setValue(100)
-        self.computed = (self._running_key, worker.femmesh, worker.result)
+        self.computed = (self._running_key, worker.femmesh, worker.result, worker.arrays)
         self._show_result(worker.result)
         self.status.setText("Done. OK keeps this mesh; Mesh again with other settings, or Cancel.")
         FreeCAD.Console.PrintMessage("BisectMesh: %s meshed:\n%s\n" % (
@@ -161,7 +159,7 @@ class MeshPanel(MeshForm):
 
     def _keep(self):
         """Creates (or updates) the mesh object with the computed mesh; False after an error."""
-        key, femmesh, result = self.computed
+        key, femmesh, result, arrays = self.computed
         doc, part = self._doc(), self._part()
         if doc is None or part is None:
             self._fail("the Part object is gone (deleted, or its document closed)")
@@ -190,7 +188,7 @@ class MeshPanel(MeshForm):
                 if args["size"] is not None:
                     FreeCADGui.doCommand("%s.ElementSize = %r" % (expr, args["size"]))
             # the mesh just computed: a macro meshes here with the line below, uncommented
-            obj.Proxy.adopt(obj, femmesh, result)
+            obj.Proxy.adopt(obj, femmesh, result, arrays=arrays)
             FreeCADGui.doCommand("# bisectmesh.remesh(%s.getObject(%r))  # meshed by the panel" % (doc_expr, obj.Name))
             FreeCADGui.doCommand("%s.recompute()" % doc_expr)
             FreeCADGui.doCommandGui("FreeCADGui.getDocument(%r).getObject(%r).Visibility = False"

@@ -1,4 +1,4 @@
-"""The mesh panel's worker thread: mesh_object.mesh_part and bisectmesh.quality off the GUI
+"""The mesh panel's worker thread: mesh_object.mesh_part with its check off the GUI
 thread (the C++ releases the GIL while it works, so the window stays alive)."""
 
 import threading
@@ -13,12 +13,11 @@ ORPHANS = set()
 
 
 class MeshWorker(QtCore.QThread):
-    """Runs mesh_object.mesh_part and bisectmesh.quality off the GUI thread. Its signals reach
+    """Runs mesh_object.mesh_part, the check included, off the GUI thread. Its signals reach
     the panel through queued connections, i.e. in the GUI thread; when it ends it calls the
     panel's ``_worker_done(worker)`` there."""
 
     progressed = QtCore.Signal(float)
-    stage = QtCore.Signal(str)
 
     def __init__(self, panel, shape, arguments, resolution):
         super().__init__()
@@ -27,7 +26,7 @@ class MeshWorker(QtCore.QThread):
         self.arguments = dict(arguments)
         self.resolution = resolution
         self.stop = threading.Event()
-        self.femmesh = self.result = self.error = None
+        self.femmesh = self.result = self.error = self.arrays = None
         self.cancelled = False
         self.finished.connect(self._done)
 
@@ -35,14 +34,12 @@ class MeshWorker(QtCore.QThread):
         import bisectmesh
 
         try:
-            femmesh, result = mesh_object.mesh_part(None, shape=self.shape, resolution=self.resolution,
-                                                    progress=self._progress, **self.arguments)
-            self.stage.emit("Checking the mesh\u2026")
-            check = bisectmesh.quality(femmesh)
-            result["quality"] = {k: v for k, v in check.items()
-                                 if k not in ("measures", "violations", "per_element", "skipped_volumes")}
-            result["violations"] = [v["message"] for v in check["violations"][:20]]
-            self.femmesh, self.result = femmesh, result
+            # the check of the mesh is part of the bar and of Stop (mesh_part's check)
+            report = {}
+            self.femmesh, self.result = mesh_object.mesh_part(
+                None, shape=self.shape, resolution=self.resolution, progress=self._progress, check=True,
+                report=report, **self.arguments)
+            self.arrays = report["arrays"]
         except bisectmesh.core().Cancelled:
             self.cancelled = True
         except Exception as err:  # shown in the panel and the report view; FreeCAD lives on

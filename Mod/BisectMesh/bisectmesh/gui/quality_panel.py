@@ -10,8 +10,9 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from . import icon_path
+from . import colouring, icon_path
 from .colouring import SCALES
+from .job_thread import JobThread
 
 # Kinds of violation whose ids are node ids; the others carry element ids.
 _NODE_KINDS = ("open_boundary", "duplicate_node", "unused_node", "non_finite_node")
@@ -45,6 +46,7 @@ class QualityPanel:
         self.obj_name = obj.Name
         self.report = None
         self.error = None
+        self.job = self.view_job = None  # the report's and the view's JobThread while they run
         self.form = [self._build_report_box(obj), self._build_view_box()]
         # FreeCADGui.Control.closeDialog() deletes the widgets without calling reject().
         self.form[0].destroyed.connect(self._close)
@@ -148,15 +150,13 @@ class QualityPanel:
         return box
 
     def _set_legend(self):
-        try:
-            from .histograms import legend_png
-
-            pixmap = QtGui.QPixmap()
-            pixmap.loadFromData(legend_png())
-            self.legend.setPixmap(pixmap)
-            self.legend.setToolTip("poor \u2192 good")
-        except Exception as err:  # matplotlib missing: words instead of a picture
-            self.legend.setText("red: poor, yellow: fair, green: good (%s)" % err)
+        # drawn from the colours themselves: matplotlib's first drawing would freeze the window
+        rgb = colouring.legend_rgb(240, 14)
+        self._legend_bytes = rgb.tobytes()  # QImage reads this buffer: keep it alive
+        image = QtGui.QImage(self._legend_bytes, rgb.shape[1], rgb.shape[0], 3 * rgb.shape[1],
+                             QtGui.QImage.Format_RGB888)
+        self.legend.setPixmap(QtGui.QPixmap.fromImage(image))
+        self.legend.setToolTip("poor \u2192 good")
 
     # -- FreeCAD task panel interface ------------------------------------------------------
 
@@ -170,6 +170,10 @@ class QualityPanel:
         return self._close()
 
     def _close(self, *_):
+        for job in (self.job, self.view_job):
+            if job is not None:
+                job.forget()
+        self.job = self.view_job = None
         if QualityPanel.open_panel is self:
             QualityPanel.open_panel = None
         return True
@@ -184,26 +188,46 @@ class QualityPanel:
         return "FreeCAD.getDocument(%r).getObject(%r)" % (self.doc_name, self.obj_name)
 
     def compute(self):
-        """Runs bisectmesh.quality through the console (so that macros record it) and shows it."""
-        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
-        try:
-            FreeCADGui.doCommand("import bisectmesh")
-            FreeCADGui.doCommand("bisectmesh_report = bisectmesh.quality(%s)" % self._object_expr())
-            import __main__
+        """Runs bisectmesh.quality in a job thread and shows the report when it comes; the console
+        gets the call (as a comment: the panel computed it) and ``bisectmesh_report``."""
+        obj = self._object()
+        if obj is None:
+            self._computed(None, "the mesh object is gone (deleted or its document closed)")
+            return
+        import bisectmesh
 
-            self.report = __main__.bisectmesh_report
-            self.error = None
-        except Exception as err:
-            self.report = None
-            self.error = str(err)
-        finally:
-            QtGui.QApplication.restoreOverrideCursor()
+        # what the thread reads, taken here: the kept arrays of a BisectMesh object, or the
+        # FemMesh itself (a reference: replacing the object's mesh meanwhile does not touch it)
+        mesh = bisectmesh.mesh_arrays(obj) if _kept_arrays(obj) else obj.FemMesh
+        self.validity.setText("Computing\u2026")
+
+        def work():
+            report = bisectmesh.quality(mesh)
+            return report, _histograms(report)  # matplotlib's drawing too: 0.3 s and more
+
+        self.job = JobThread(work, self._computed)
+
+    def computing(self):
+        """True while the report is being computed."""
+        return self.job is not None
+
+    def _computed(self, answer, error):
+        self.job = None
+        report, self._histogram_png = answer if answer is not None else (None, None)
+        self.report, self.error = report, error
+        if QualityPanel.open_panel is not self:
+            return
         self._show_report()
-        if self.report is not None:
+        if report is not None:
+            import __main__
             import bisectmesh
 
+            __main__.bisectmesh_report = report
+            FreeCADGui.doCommand("import bisectmesh")
+            FreeCADGui.doCommand("# bisectmesh_report = bisectmesh.quality(%s)  # computed by the Mesh quality panel"
+                                 % self._object_expr())
             FreeCAD.Console.PrintMessage(
-                "Mesh quality of %s:\n%s\n" % (self.label, bisectmesh.format_report(self.report)))
+                "Mesh quality of %s:\n%s\n" % (self.label, bisectmesh.format_report(report)))
 
     def _show_report(self):
         report = self.report
@@ -255,21 +279,26 @@ class QualityPanel:
         self._show_histograms()
 
     def _show_histograms(self):
-        try:
-            from .histograms import histogram_png
-
+        png = getattr(self, "_histogram_png", None)
+        if isinstance(png, bytes):
             pixmap = QtGui.QPixmap()
-            pixmap.loadFromData(histogram_png(self.report, width_px=_HISTOGRAM_WIDTH))
+            pixmap.loadFromData(png)
             self.histograms.setPixmap(pixmap)
-        except Exception as err:
-            self.histograms.setText("(no histograms: %s)" % _escape(str(err)))
+        else:
+            self.histograms.setText("(no histograms: %s)" % _escape(str(png)))
 
     def _colour_toggled(self, checked):
         if checked:
-            self._run_gui("bisectmesh.gui.colouring.colour_by_quality(%s, %r)"
-                          % (self._object_expr(), self.measure.itemData(self.measure.currentIndex())))
+            measure = self.measure.itemData(self.measure.currentIndex())
+            self._in_view("bisectmesh.gui.colouring.colour_by_quality(%s, %r)" % (self._object_expr(), measure),
+                          lambda mesh: colouring.colour_values(mesh, measure),
+                          lambda obj, values: colouring.apply_colours(obj, *values))
         else:
             self._run_gui("%s.ViewObject.resetNodeColor()" % self._object_expr())
+
+    def colouring_done(self):
+        """True when no colouring or marking is being computed."""
+        return self.view_job is None
 
     def _measure_changed(self, _index):
         if self.colour.isChecked():
@@ -281,12 +310,44 @@ class QualityPanel:
 
     def _mark_toggled(self, checked):
         if checked:
-            self._run_gui("bisectmesh.gui.colouring.mark_poor_elements(%s, 'dihedral_min', %r)"
-                          % (self._object_expr(), round(self.threshold.value(), 1)))
+            threshold = round(self.threshold.value(), 1)
+            self._in_view("bisectmesh.gui.colouring.mark_poor_elements(%s, 'dihedral_min', %r)"
+                          % (self._object_expr(), threshold),
+                          lambda mesh: colouring.poor_element_nodes(mesh, "dihedral_min", threshold),
+                          colouring.apply_marks)
         else:
             self._run_gui("%s.ViewObject.resetHighlightedNodes()" % self._object_expr())
 
+    def _in_view(self, call, compute, apply):
+        """``compute(mesh)`` in a job thread, then ``apply(obj, values)`` here; the console gets
+        ``call`` as a comment (a macro replays it, blocking). A newer request replaces a running one."""
+        obj = self._object()
+        if obj is None:
+            self.validity.setText("The mesh object is gone (deleted or its document closed).")
+            return
+        import bisectmesh
+
+        if self.view_job is not None:
+            self.view_job.forget()
+        mesh = bisectmesh.mesh_arrays(obj) if _kept_arrays(obj) else obj.FemMesh
+
+        def done(values, error):
+            if self.view_job is not job:  # replaced by a newer request, or reset
+                return
+            self.view_job = None
+            target = self._object()
+            if error is not None or target is None:
+                FreeCAD.Console.PrintError("BisectMesh: %s\n" % (error or "the mesh object is gone"))
+                return
+            apply(target, values)
+            FreeCADGui.doCommandGui("# %s  # applied by the Mesh quality panel" % call)
+
+        job = self.view_job = JobThread(lambda: compute(mesh), done)
+
     def _reset_clicked(self):
+        if self.view_job is not None:
+            self.view_job.forget()
+            self.view_job = None
         for box in (self.colour, self.mark):
             box.blockSignals(True)
             box.setChecked(False)
@@ -318,6 +379,21 @@ class QualityPanel:
             FreeCAD.Console.PrintError("BisectMesh: %s\n" % err)
         finally:
             QtGui.QApplication.restoreOverrideCursor()
+
+
+def _histograms(report):
+    """The histograms' PNG bytes, or the reason there are none (matplotlib missing, say)."""
+    try:
+        from .histograms import histogram_png
+
+        return histogram_png(report, width_px=_HISTOGRAM_WIDTH)
+    except Exception as err:
+        return str(err) or err.__class__.__name__
+
+
+def _kept_arrays(obj):
+    kept = getattr(getattr(obj, "Proxy", None), "mesh_arrays", None)
+    return callable(kept) and kept() is not None
 
 
 def _element_nodes(femmesh, element_id):
