@@ -202,6 +202,12 @@ def core_arrays(out):
                       np.arange(1, len(tets) + 1, dtype=np.int64), 2 if tets.shape[1] == 10 else 1, {})
 
 
+def _slices(array, step):
+    """(offset, rows as Python lists) of ``array``, ``step`` rows at a time."""
+    for start in range(0, len(array), step):
+        yield start, array[start:start + step].tolist()
+
+
 def femmesh_from_arrays(out, faces, solids, progress=None):
     """A ``Fem.FemMesh`` of the core's mesh dict (nodes, tets, region, tris, tri_tag) with the
     groups ``Face<k>_Nodes``, ``Face<k>_Faces`` (k = 1..faces) and ``Solid<r>`` (r = 1..solids).
@@ -212,48 +218,46 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     region, tri_tag = np.asarray(out["region"]), np.asarray(out["tri_tag"])
     total = max(1, len(nodes) + len(tets) + len(tris) + faces + solids)
     # a progress call every 5,000 items: about 50 ms of FreeCAD's adding of tetra10 (Stop within
-    # 0.5 s), and one after each conversion of a whole array to Python lists
+    # 0.5 s). The arrays become Python lists a slice at a time: one tolist() of 10^6 tetra10 holds
+    # the GIL for a second and more, and the window with it.
     step = 5000
     mesh = Fem.FemMesh()
-    add_node = mesh.addNode
-    node_list = nodes.tolist()
-    if progress is not None:
-        progress(0.0)
-    for i, p in enumerate(node_list):
-        add_node(p[0], p[1], p[2], i + 1)
-        if progress is not None and i % step == step - 1:
-            progress(i / total)
+    add_node, add_volume, add_face = mesh.addNode, mesh.addVolume, mesh.addFace
     perm = list(TET10_PERMUTATION if tets.shape[1] == 10 else TET4_PERMUTATION)
-    add_volume = mesh.addVolume
-    tet_list = (tets[:, perm] + 1).tolist()
-    if progress is not None:
-        progress(len(nodes) / total)
-    for e, t in enumerate(tet_list):
-        add_volume(t, e + 1)
-        if progress is not None and e % step == step - 1:
-            progress((len(nodes) + e) / total)
-    add_face = mesh.addFace
     first = len(tets) + 1
-    done = len(nodes) + len(tets)
-    for i, t in enumerate((tris + 1).tolist()):
-        add_face(t, first + i)
-        if progress is not None and i % step == step - 1:
-            progress((done + i) / total)
-    done += len(tris)
+    done = 0
+    for start, rows in _slices(nodes, step):
+        for i, p in enumerate(rows, start + 1):
+            add_node(p[0], p[1], p[2], i)
+        done += len(rows)
+        if progress is not None:
+            progress(done / total)
+    for start, rows in _slices(tets[:, perm] + 1, step):
+        for e, t in enumerate(rows, start + 1):
+            add_volume(t, e)
+        done += len(rows)
+        if progress is not None:
+            progress(done / total)
+    for start, rows in _slices(tris + 1, step):
+        for i, t in enumerate(rows, first + start):
+            add_face(t, i)
+        done += len(rows)
+        if progress is not None:
+            progress(done / total)
     for k in range(faces):
         if progress is not None and k % 100 == 99:
             progress((done + k) / total)
         mine = np.nonzero(tri_tag == k)[0]
-        g = mesh.addGroup("Face%d_Nodes" % (k + 1), "Node")
-        mesh.addGroupElements(g, (np.unique(tris[mine]) + 1).tolist() if len(mine) else [])
-        g = mesh.addGroup("Face%d_Faces" % (k + 1), "Face")
-        mesh.addGroupElements(g, (mine + first).tolist())
+        for kind, ids in (("Nodes", np.unique(tris[mine]) + 1), ("Faces", mine + first)):
+            g = mesh.addGroup("Face%d_%s" % (k + 1, kind), kind[:-1])
+            for _, part in _slices(ids, step):
+                mesh.addGroupElements(g, part)
     for r in range(solids):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
-        ids = (np.nonzero(region == r)[0] + 1).tolist()
+        ids = np.nonzero(region == r)[0] + 1
         # in slices, each one call into FreeCAD: 2e5 ids in one call took 0.5 s without a progress call
-        for start in range(0, len(ids), step):
-            mesh.addGroupElements(g, ids[start:start + step])
+        for start, part in _slices(ids, step):
+            mesh.addGroupElements(g, part)
             if progress is not None:
                 progress((done + faces + r + start / len(ids)) / total)
     if progress is not None:
