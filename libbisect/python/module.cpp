@@ -19,6 +19,7 @@
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
 #include "io/face_checks.hpp"
+#include "util/progress_poll.hpp"
 #include "bisect/occ.hpp"
 #include "options.hpp"
 
@@ -53,11 +54,21 @@ TetMesh mesh_from_arrays(const NodeArray& nodes, const IndexArray& tets, const p
                          ", but there are " + std::to_string(n.shape(0)) + " nodes");
       m.tets[i * t.shape(1) + j] = Index(v);
     }
-  if (!region.is_none()) m.region = region.cast<std::vector<Index>>();
-  else m.region.assign(t.shape(0), 0);
+  // through the buffer: a cast to std::vector makes a Python int of every entry (0.5 s per 10^6,
+  // with the GIL held: the window froze while the panel's check started)
+  const auto flat = [](const py::object& values) {
+    const IndexArray a = values.cast<IndexArray>();
+    return std::vector<std::int64_t>(a.data(), a.data() + a.size());
+  };
+  if (!region.is_none()) {
+    const std::vector<std::int64_t> r = flat(region);
+    m.region.assign(r.begin(), r.end());
+  } else {
+    m.region.assign(t.shape(0), 0);
+  }
   if (m.region.size() != std::size_t(t.shape(0))) throw InputError("region must have one entry per tetrahedron");
-  if (!node_ids.is_none()) m.node_ids = node_ids.cast<std::vector<std::int64_t>>();
-  if (!tet_ids.is_none()) m.tet_ids = tet_ids.cast<std::vector<std::int64_t>>();
+  if (!node_ids.is_none()) m.node_ids = flat(node_ids);
+  if (!tet_ids.is_none()) m.tet_ids = flat(tet_ids);
   if (!m.node_ids.empty() && m.node_ids.size() != m.nodes.size())
     throw InputError("node_ids must have one entry per node");
   if (!m.tet_ids.empty() && m.tet_ids.size() != m.num_tets())
@@ -258,7 +269,9 @@ PYBIND11_MODULE(_core, m) {
         std::string stats;
         bridge.run([&] {
           mesh = generate_mesh(in, opt, &st);
-          stats = generate_stats_json(st, summarize_quality(element_quality(mesh)));
+          util::ProgressPoll poll(opt.progress);
+          poll.at(1.0);
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); })));
         });
         py::dict d = mesh_to_dict(mesh);
         d["stats"] = json_loads(stats);
@@ -292,7 +305,9 @@ PYBIND11_MODULE(_core, m) {
         bridge.run([&] {
           const BrepInput in = load_brep_string(brep, name.empty() ? std::string("the shape") : name);
           mesh = generate_brep_mesh(in, opt, &st);
-          stats = generate_stats_json(st, summarize_quality(element_quality(mesh)));
+          util::ProgressPoll poll(opt.progress);  // Stop within the summary too (0.4 s at 10^6)
+          poll.at(1.0);
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); })));
           if (!path.empty()) write_mesh(mesh, path);
         });
         py::dict d = arrays ? mesh_to_dict(mesh) : py::dict();
@@ -346,16 +361,18 @@ PYBIND11_MODULE(_core, m) {
 
   m.def(
       "quality_summary",
-      [](const NodeArray& nodes, const IndexArray& tets) {
+      [](const NodeArray& nodes, const IndexArray& tets, const py::object& progress) {
         const TetMesh mesh = mesh_from_arrays(nodes, tets, py::none(), py::none(), py::none());
         std::string json;
-        {
-          py::gil_scoped_release release;
-          json = quality_json(summarize_quality(element_quality(mesh)));
-        }
+        ProgressBridge bridge(progress);
+        const std::function<bool(double)> callback = bridge.callback();
+        util::ProgressPoll poll(callback);
+        bridge.run([&] { json = quality_json(summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); }))); });
         return json_loads(json);
       },
-      py::arg("nodes"), py::arg("tets"), "The quality summary (min, mean, max, histograms) as a dict.");
+      py::arg("nodes"), py::arg("tets"), py::arg("progress") = py::none(),
+      "The quality summary (min, mean, max, histograms) as a dict. progress(0.0) -> bool|None is "
+      "called on this thread at most every 50 ms; False raises Cancelled.");
 
   m.def(
       "validate",

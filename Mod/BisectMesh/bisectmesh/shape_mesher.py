@@ -245,13 +245,13 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
         if progress is not None:
             progress(done / total)
     for k in range(faces):
-        if progress is not None and k % 100 == 99:
-            progress((done + k) / total)
         mine = np.nonzero(tri_tag == k)[0]
         for kind, ids in (("Nodes", np.unique(tris[mine]) + 1), ("Faces", mine + first)):
             g = mesh.addGroup("Face%d_%s" % (k + 1, kind), kind[:-1])
-            for _, part in _slices(ids, step):
+            for _, part in _slices(ids, step):  # FreeCAD's adding to a group: 1.2 s for 10^6 tetra10's faces
                 mesh.addGroupElements(g, part)
+                if progress is not None:
+                    progress((done + k) / total)
     for r in range(solids):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
         ids = np.nonzero(region == r)[0] + 1

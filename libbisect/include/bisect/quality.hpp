@@ -7,6 +7,7 @@
 // mirror image; validity is the validator's job) and are 0 for a degenerate tetrahedron.
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,8 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
-std::vector<TetQuality> element_quality(const TetMesh& mesh);
+// cancelled (optional) is asked every 4096 tetrahedra; true stops with Cancelled.
+std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled = {});
 
 struct MeasureStats {
   double min = 0, mean = 0, max = 0;

@@ -23,6 +23,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "bisect/types.hpp"
@@ -65,7 +66,8 @@ struct TetMesh {
 // The 10-node mesh of a 4-node one: a node at the middle of every edge, shared by the
 // tetrahedra and triangles on that edge, in the kTetEdge and kTriEdge slots. Straight edges keep
 // the mid-nodes on the (planar) faces of a polyhedral domain. Corner nodes keep their indices;
-// the mid-nodes follow them. A mesh already of order 2 comes back unchanged.
-TetMesh to_second_order(const TetMesh& linear);
+// the mid-nodes follow them. A mesh already of order 2 comes back unchanged. cancelled
+// (optional) is asked every 4096 tetrahedra; true stops with Cancelled.
+TetMesh to_second_order(const TetMesh& linear, const std::function<bool()>& cancelled = {});
 
 }  // namespace bisect

@@ -341,12 +341,11 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
   const auto t_opt = Clock::now();
   tet::TetComplex cx(best.X);
-  // Stop within the complex's build (0.4 s at 2e5 tetrahedra, no progress call before)
+  // Stop within the complex's build and its constraints (0.4 s and more at 2e5 tetrahedra)
   util::ProgressPoll build_poll(progress);
   build_poll.at(kBar.filled);
   if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
   cx.build(std::move(filled.tets), std::move(filled.region));
-  cx.cancelled = nullptr;
   std::unordered_set<tet::FaceKey, tet::FaceKeyHash> held;
   for (const pipeline::FacePiece& piece : best.grids.pieces)
     for (const auto& t : piece.tris) {
@@ -354,6 +353,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       if (piece.cell_in < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
     }
   cx.constrain(held);
+  cx.cancelled = nullptr;
   cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(kBar.built + (kBar.optimized - kBar.built) * x); };

@@ -82,7 +82,7 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
     }
   *straightened = 0;
   if (order != 2) return out;
-  out = to_second_order(out);
+  out = to_second_order(out, cancelled);
   // curved positions of the boundary mid-nodes
   const std::size_t n_nodes = out.nodes.size();
   std::vector<Vec3> straight = out.nodes;
@@ -114,8 +114,10 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
   // every element positive at its corners and Gauss points
   const std::size_t nt = out.num_tets();
   std::vector<std::vector<Index>> tets_of(n_nodes);
-  for (std::size_t t = 0; t < nt; ++t)
+  for (std::size_t t = 0; t < nt; ++t) {
+    poll(t);
     for (int i = 4; i < 10; ++i) tets_of[out.tet_node(t, i)].push_back(static_cast<Index>(t));
+  }
   auto worst_around = [&](Index m) {
     double w = 1e300;
     for (Index t : tets_of[m]) w = std::min(w, tet10_jacobian_ratio(out, static_cast<std::size_t>(t)));

@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
 
 namespace bisect {
@@ -115,11 +116,12 @@ TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   return q;
 }
 
-std::vector<TetQuality> element_quality(const TetMesh& mesh) {
+std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled) {
   const std::size_t nt = mesh.num_tets();
   const std::size_t nn = mesh.nodes.size();
   std::vector<TetQuality> out(nt);
   for (std::size_t t = 0; t < nt; ++t) {
+    if ((t & 4095) == 4095 && cancelled && cancelled()) throw Cancelled();  // 1 s and more at 10^6
     Index v[4];
     bool ok = true;
     for (int i = 0; i < 4; ++i) {

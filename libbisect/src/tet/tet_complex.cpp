@@ -73,12 +73,14 @@ std::vector<Tet> TetComplex::tets() const {
 
 void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces) {
   if (faces.empty()) return;
-  for (std::size_t t = 0; t < tet.size(); ++t)
+  for (std::size_t t = 0; t < tet.size(); ++t) {
+    poll(t);  // four hash lookups a tetrahedron: 1.6 s at 10^6
     if (alive[t])
       for (int f = 0; f < 4; ++f) {
         const auto fv = face(static_cast<Index>(t), f);
         if (faces.count(face_key(fv[0], fv[1], fv[2]))) cmask_[t] |= static_cast<unsigned char>(1u << f);
       }
+  }
 }
 
 void TetComplex::refresh_quality() {

@@ -99,7 +99,7 @@ std::vector<Index> TetMesh::neighbours() const {
   return neigh;
 }
 
-TetMesh to_second_order(const TetMesh& linear) {
+TetMesh to_second_order(const TetMesh& linear, const std::function<bool()>& cancelled) {
   if (linear.order == 2) return linear;
   TetMesh out = linear;
   out.order = 2;
@@ -121,6 +121,7 @@ TetMesh to_second_order(const TetMesh& linear) {
   };
   out.tets.reserve(linear.num_tets() * 10);
   for (std::size_t t = 0; t < linear.num_tets(); ++t) {
+    if ((t & 4095) == 4095 && cancelled && cancelled()) throw Cancelled();  // 1.8 s at 10^6
     Index v[10];
     for (int i = 0; i < 4; ++i) v[i] = linear.tet_node(t, i);
     for (int e = 0; e < 6; ++e) v[4 + e] = middle(v[kTetEdge[e][0]], v[kTetEdge[e][1]]);
