@@ -2,8 +2,11 @@
 
 Two boxes: the report (validity with the list of problems, a table of the measures, histograms
 of the minimum dihedral angle and of gamma) and the 3D view (colour by quality, mark the nodes
-of poor elements, reset). What the user does goes through FreeCADGui.doCommand/doCommandGui,
-so that it is recorded in macros and can be replayed from the Python console.
+of poor elements, reset). The report, the histograms, the colours and the marks are computed in
+job threads (job_thread.py), so that the window never freezes for long, even at 10^6 elements;
+the calls then appear in the Python console and in macros as comments (a macro that uncomments
+them computes the same, blocking), and the report is left in ``bisectmesh_report``. Resetting
+goes through FreeCADGui.doCommandGui.
 """
 
 import FreeCAD
@@ -46,7 +49,8 @@ class QualityPanel:
         self.obj_name = obj.Name
         self.report = None
         self.error = None
-        self.job = self.view_job = None  # the report's and the view's JobThread while they run
+        self.job = None  # the report's JobThread while it runs
+        self.view_jobs = {}  # "colour" or "mark": its JobThread while it runs
         self.form = [self._build_report_box(obj), self._build_view_box()]
         # FreeCADGui.Control.closeDialog() deletes the widgets without calling reject().
         self.form[0].destroyed.connect(self._close)
@@ -170,10 +174,10 @@ class QualityPanel:
         return self._close()
 
     def _close(self, *_):
-        for job in (self.job, self.view_job):
+        for job in [self.job] + list(self.view_jobs.values()):
             if job is not None:
                 job.forget()
-        self.job = self.view_job = None
+        self.job, self.view_jobs = None, {}
         if QualityPanel.open_panel is self:
             QualityPanel.open_panel = None
         return True
@@ -290,15 +294,16 @@ class QualityPanel:
     def _colour_toggled(self, checked):
         if checked:
             measure = self.measure.itemData(self.measure.currentIndex())
-            self._in_view("bisectmesh.gui.colouring.colour_by_quality(%s, %r)" % (self._object_expr(), measure),
+            self._in_view("colour", "bisectmesh.gui.colouring.colour_by_quality(%s, %r)" % (self._object_expr(), measure),
                           lambda mesh: colouring.colour_values(mesh, measure),
                           lambda obj, values: colouring.apply_colours(obj, *values))
         else:
+            self._forget_view_job("colour")
             self._run_gui("%s.ViewObject.resetNodeColor()" % self._object_expr())
 
     def colouring_done(self):
         """True when no colouring or marking is being computed."""
-        return self.view_job is None
+        return not self.view_jobs
 
     def _measure_changed(self, _index):
         if self.colour.isChecked():
@@ -311,30 +316,36 @@ class QualityPanel:
     def _mark_toggled(self, checked):
         if checked:
             threshold = round(self.threshold.value(), 1)
-            self._in_view("bisectmesh.gui.colouring.mark_poor_elements(%s, 'dihedral_min', %r)"
+            self._in_view("mark", "bisectmesh.gui.colouring.mark_poor_elements(%s, 'dihedral_min', %r)"
                           % (self._object_expr(), threshold),
                           lambda mesh: colouring.poor_element_nodes(mesh, "dihedral_min", threshold),
                           colouring.apply_marks)
         else:
+            self._forget_view_job("mark")
             self._run_gui("%s.ViewObject.resetHighlightedNodes()" % self._object_expr())
 
-    def _in_view(self, call, compute, apply):
+    def _forget_view_job(self, kind):
+        job = self.view_jobs.pop(kind, None)
+        if job is not None:
+            job.forget()
+
+    def _in_view(self, kind, call, compute, apply):
         """``compute(mesh)`` in a job thread, then ``apply(obj, values)`` here; the console gets
-        ``call`` as a comment (a macro replays it, blocking). A newer request replaces a running one."""
+        ``call`` as a comment (a macro replays it, blocking). A newer request of the same kind
+        replaces a running one; unticking its box drops it."""
         obj = self._object()
         if obj is None:
             self.validity.setText("The mesh object is gone (deleted or its document closed).")
             return
         import bisectmesh
 
-        if self.view_job is not None:
-            self.view_job.forget()
+        self._forget_view_job(kind)
         mesh = bisectmesh.mesh_arrays(obj) if _kept_arrays(obj) else obj.FemMesh
 
         def done(values, error):
-            if self.view_job is not job:  # replaced by a newer request, or reset
+            if self.view_jobs.get(kind) is not job:  # replaced by a newer request, or dropped
                 return
-            self.view_job = None
+            del self.view_jobs[kind]
             target = self._object()
             if error is not None or target is None:
                 FreeCAD.Console.PrintError("BisectMesh: %s\n" % (error or "the mesh object is gone"))
@@ -342,12 +353,11 @@ class QualityPanel:
             apply(target, values)
             FreeCADGui.doCommandGui("# %s  # applied by the Mesh quality panel" % call)
 
-        job = self.view_job = JobThread(lambda: compute(mesh), done)
+        job = self.view_jobs[kind] = JobThread(lambda: compute(mesh), done)
 
     def _reset_clicked(self):
-        if self.view_job is not None:
-            self.view_job.forget()
-            self.view_job = None
+        for kind in list(self.view_jobs):
+            self._forget_view_job(kind)
         for box in (self.colour, self.mark):
             box.blockSignals(True)
             box.setChecked(False)
