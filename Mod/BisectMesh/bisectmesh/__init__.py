@@ -139,7 +139,6 @@ def quality(femmesh, validate=True, per_element=False, progress=None):
     Raises TypeError for arguments of the wrong type, ValueError when the mesh has no tetrahedra.
     """
     from . import arguments
-
     from .femmesh_arrays import MeshArrays
 
     arguments.flag("validate", validate)
