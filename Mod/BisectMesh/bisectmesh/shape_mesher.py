@@ -226,24 +226,14 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     perm = list(TET10_PERMUTATION if tets.shape[1] == 10 else TET4_PERMUTATION)
     first = len(tets) + 1
     done = 0
-    for start, rows in _slices(nodes, step):
-        for i, p in enumerate(rows, start + 1):
-            add_node(p[0], p[1], p[2], i)
-        done += len(rows)
-        if progress is not None:
-            progress(done / total)
-    for start, rows in _slices(tets[:, perm] + 1, step):
-        for e, t in enumerate(rows, start + 1):
-            add_volume(t, e)
-        done += len(rows)
-        if progress is not None:
-            progress(done / total)
-    for start, rows in _slices(tris + 1, step):
-        for i, t in enumerate(rows, first + start):
-            add_face(t, i)
-        done += len(rows)
-        if progress is not None:
-            progress(done / total)
+    for array, add, first_id in ((nodes, lambda p, i: add_node(p[0], p[1], p[2], i), 1),
+                                 (tets[:, perm] + 1, add_volume, 1), (tris + 1, add_face, first)):
+        for start, rows in _slices(array, step):
+            for i, row in enumerate(rows, first_id + start):
+                add(row, i)
+            done += len(rows)
+            if progress is not None:
+                progress(done / total)
     for k in range(faces):
         mine = np.nonzero(tri_tag == k)[0]
         for kind, ids in (("Nodes", np.unique(tris[mine]) + 1), ("Faces", mine + first)):
