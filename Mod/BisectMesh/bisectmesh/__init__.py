@@ -92,9 +92,11 @@ def mesh_arrays(femmesh):
     """The tetrahedra of a Fem.FemMesh (or FEM mesh object) as arrays in the core's convention;
     see :class:`bisectmesh.femmesh_arrays.MeshArrays`. A BisectMesh object meshed in this
     session hands over the generator's arrays it kept instead of reading its FemMesh (4 s at
-    2e5 tetra10)."""
-    from .femmesh_arrays import femmesh_to_arrays
+    2e5 tetra10). MeshArrays come back as they are."""
+    from .femmesh_arrays import MeshArrays, femmesh_to_arrays
 
+    if isinstance(femmesh, MeshArrays):
+        return femmesh
     kept = getattr(getattr(femmesh, "Proxy", None), "mesh_arrays", None)
     arrays = kept() if callable(kept) else None
     return arrays if arrays is not None else femmesh_to_arrays(femmesh)
@@ -139,7 +141,6 @@ def quality(femmesh, validate=True, per_element=False, progress=None):
     Raises TypeError for arguments of the wrong type, ValueError when the mesh has no tetrahedra.
     """
     from . import arguments
-    from .femmesh_arrays import MeshArrays
 
     arguments.flag("validate", validate)
     arguments.flag("per_element", per_element)
@@ -150,7 +151,7 @@ def quality(femmesh, validate=True, per_element=False, progress=None):
         if progress is not None and progress(fraction) is False:
             raise c.Cancelled("cancelled")
 
-    arrays = femmesh if isinstance(femmesh, MeshArrays) else mesh_arrays(femmesh)
+    arrays = mesh_arrays(femmesh)
     report_progress(0.0)
     if len(arrays.tets) == 0:
         other = ", ".join("%d %s" % (n, k) for k, n in sorted(arrays.skipped.items()))

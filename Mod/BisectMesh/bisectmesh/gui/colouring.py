@@ -92,9 +92,8 @@ def colour_values(mesh, measure="gamma"):
     (node ids, badness) as lists, boundary nodes only. No view provider is touched: this may run
     in a worker thread."""
     import bisectmesh
-    from ..femmesh_arrays import MeshArrays
 
-    arrays = mesh if isinstance(mesh, MeshArrays) else bisectmesh.mesh_arrays(mesh)
+    arrays = bisectmesh.mesh_arrays(mesh)
     if len(arrays.tets) == 0:
         raise ValueError("%s has no tetrahedra to colour" % getattr(mesh, "Label", "the mesh"))
     _, measures = bisectmesh.element_quality(None, arrays)
@@ -122,9 +121,8 @@ def poor_element_nodes(mesh, measure="dihedral_min", threshold=10.0):
     """:func:`worst_element_nodes` of ``mesh`` (a FEM mesh object, FemMesh or MeshArrays); touches
     no view provider (may run in a worker thread)."""
     import bisectmesh
-    from ..femmesh_arrays import MeshArrays
 
-    arrays = mesh if isinstance(mesh, MeshArrays) else bisectmesh.mesh_arrays(mesh)
+    arrays = bisectmesh.mesh_arrays(mesh)
     _, measures = bisectmesh.element_quality(None, arrays)
     return worst_element_nodes(arrays, measures[measure], measure, threshold)
 
