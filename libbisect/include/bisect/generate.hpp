@@ -108,6 +108,9 @@ struct GenerateStats {
   // cells whose star fill (smallest dihedral under 5 degrees) was replaced by a better one from
   // Delaunay boundary recovery: thin cells, whose two sides' grids are not in line
   std::int64_t refilled_cells = 0;
+  // inverted tetrahedra (a last-resort cell's fold) whose neighbourhood the optimiser cut out and
+  // filled again (optimize/inverted_refill.hpp)
+  std::int64_t refilled_folds = 0;
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "bisect/errors.hpp"
+#include "optimize/inverted_refill.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "optimize/smooth.hpp"
@@ -87,6 +88,10 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
     }
   }
   next_step();
+  // a fold the passes left (a proxy cell's, inverted_refill.hpp) is cut out and filled again
+  // before the sliver repair, which then sees what the refill made
+  const RefillCounts refill = refill_inverted(cx, X, fixed);
+  n.refilled_folds = static_cast<std::int64_t>(refill.refilled);
   relist();
   if (opt.sliver_rounds > 0)
     n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));

@@ -18,6 +18,7 @@ inline constexpr double kSliverBelowDeg = 10;
 struct OptimizeCounts {
   std::int64_t flips = 0;         // transformations applied
   std::int64_t sliver_moves = 0;  // node moves and insertions of the sliver repair
+  std::int64_t refilled_folds = 0;  // inverted tetrahedra's neighbourhoods filled again (inverted_refill.hpp)
 };
 
 // cx works on X; fixed[v]: node v never moves (X may grow: the sliver repair inserts nodes).

@@ -131,7 +131,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
     total.skipped_nodes += st.skipped_nodes, total.flips += st.flips, total.sliver_moves += st.sliver_moves;
     total.fillings += st.fillings, total.graded_nodes += st.graded_nodes, total.straightened_edges += st.straightened_edges;
     total.proxy_cells += st.proxy_cells, total.joined_cells += st.joined_cells, total.recovered_cells += st.recovered_cells;
-    total.refilled_cells += st.refilled_cells;
+    total.refilled_cells += st.refilled_cells, total.refilled_folds += st.refilled_folds;
     total.surface_min_angle = g == 0 ? st.surface_min_angle : std::min(total.surface_min_angle, st.surface_min_angle);
     total.spacing = std::max(total.spacing, st.spacing);
     total.init_geom += st.init_geom, total.bisect += st.bisect, total.gen_nodes += st.gen_nodes;

@@ -24,7 +24,7 @@ struct Side {
 
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    bool last_resort_allowed, BrepCellCounts* counts, const std::function<bool(double)>& cancelled) {
+                                    BrepCellCounts* counts, const std::function<bool(double)>& cancelled) {
   const std::size_t n = d.cells.size();
   const PolyhedralModel& m = d.model;
   // per cell: its face pieces' triangles (outward) and its cut faces with their two sides
@@ -148,8 +148,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
             break;
           }
         }
-        // the last resort: the cell alone, filled in the proxy, a tetrahedron of four boundary
-        // nodes left inverted for the global optimisation's flips
+        // back to the cell alone for the last two ways
         group = group_before, members = members_before, counts->joined = joined_before;
         // the cell alone, by Delaunay boundary recovery: no point need see it whole
         CellJob recovered = job_of(static_cast<Index>(c));
@@ -158,11 +157,14 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
           recover[c] = 1;
           break;
         }
+        // the last resort: the cell alone, filled in the proxy, what stays inverted left for the
+        // global optimisation
         CellJob alone = job_of(static_cast<Index>(c));
-        alone.in_proxy = alone.keep_fixed_inverted = true;
-        if (!last_resort_allowed || !fill_job_works(alone, X, &P, delaunay))
-          throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and its proxy's filling "
-                                        "cannot be untangled (the cell is narrower than the curved face's bulge next to it)");
+        alone.in_proxy = alone.keep_inverted = true;
+        if (!fill_job_works(alone, X, &P, delaunay))
+          throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and it cannot be "
+                                        "filled in the proxy's geometry either (the cell is narrower than the curved face's bulge "
+                                        "next to it)");
         last_resort[c] = 1;
         break;
       }
@@ -181,7 +183,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
       jobs.back().recover = true;
       ++counts->recovered;
     } else if (members[c].size() == 1 && !star(jobs.back())) {
-      jobs.back().in_proxy = true, jobs.back().keep_fixed_inverted = last_resort[c] != 0;
+      jobs.back().in_proxy = true, jobs.back().keep_inverted = last_resort[c] != 0;
       ++counts->in_proxy;
     }
   }

@@ -5,10 +5,9 @@
 // the tetrahedra made there can be untangled on the true geometry; otherwise it is joined with
 // its neighbours across cut faces (a few at most) until a point sees the group whole. Failing
 // that, the cell alone by Delaunay boundary recovery (tet/recovery_fill.hpp), which needs no
-// point that sees it whole; failing that too (a caller that can try a finer proxy first says
-// so), the last resort: the cell alone in
-// the proxy's geometry, a tetrahedron of four boundary nodes allowed to stay inverted for the
-// global optimisation to flip away (the finished mesh is checked).
+// point that sees it whole; failing that too, the last resort: the cell alone in
+// the proxy's geometry, the tetrahedra its untangling leaves inverted kept for the global
+// optimisation's flips and fold refill to mend (the finished mesh is checked).
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -38,7 +37,7 @@ struct BrepCellCounts {
 // cells done) is asked before each cell; true stops with Cancelled.
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
                                     const std::vector<Vec3>& P, const std::vector<BrepCell>& cells, bool delaunay,
-                                    bool last_resort_allowed, BrepCellCounts* counts,
+                                    BrepCellCounts* counts,
                                     const std::function<bool(double)>& cancelled = {});
 
 }  // namespace bisect::pipeline

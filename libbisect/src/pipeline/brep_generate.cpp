@@ -186,6 +186,58 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
   }
 }
 
+// The global optimisation (7.5 over the whole mesh) and the output's assembly, checked: a
+// tetrahedron inside out is a MeshingError naming the place, never a mesh.
+TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, pipeline::BrepPlacement* best, pipeline::FilledCells& filled,
+                              GenerateStats* st, const std::function<bool(double)>& progress) {
+  best->on_boundary.resize(best->X.size(), 0);  // helpers the cells kept are inside
+  st->graded_nodes = best->graded_nodes;
+  st->helper_nodes = filled.helper_nodes, st->helpers_removed = filled.helpers_removed;
+  st->refilled_cells = filled.refilled;
+  st->skipped_nodes = filled.skipped_nodes, st->flips = filled.flips;
+  st->surface_min_angle = best->grids.min_angle_deg;
+  // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
+  const auto t_opt = Clock::now();
+  tet::TetComplex cx(best->X);
+  // Stop within the complex's build and its constraints (0.4 s and more at 2e5 tetrahedra)
+  util::ProgressPoll build_poll(progress);
+  build_poll.at(kBar.filled);
+  if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
+  cx.build(std::move(filled.tets), std::move(filled.region));
+  std::unordered_set<tet::FaceKey, tet::FaceKeyHash> held;
+  for (const pipeline::FacePiece& piece : best->grids.pieces)
+    for (const auto& t : piece.tris) {
+      held.insert(tet::face_key(t[0], t[1], t[2]));
+      if (piece.cell_in < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
+    }
+  cx.constrain(held);
+  cx.cancelled = nullptr;
+  cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
+  std::function<bool(double)> optimize_progress;
+  if (progress) optimize_progress = [&](double x) { return progress(kBar.built + (kBar.optimized - kBar.built) * x); };
+  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best->X, best->on_boundary, opt.optimize, optimize_progress);
+  st->flips += oc.flips;
+  st->sliver_moves = oc.sliver_moves;
+  st->refilled_folds = oc.refilled_folds;
+  st->optimize = since(t_opt);
+  if (progress && !progress(kBar.optimized)) throw Cancelled();
+  util::ProgressPoll assembly_poll(progress);
+  assembly_poll.at(kBar.optimized);
+  TetMesh out = pipeline::assemble_brep_mesh(best->grids, cx, best->X, in, opt.order, &st->straightened_edges,
+                                             [&assembly_poll] { return assembly_poll.cancelled(); });
+  // no mesh leaves inside out: a stage's slip is an error naming the place, not a bad mesh
+  for (std::size_t t = 0; t < out.num_tets(); ++t) {
+    const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
+               &d = out.nodes[out.tet_node(t, 3)];
+    if (geom::orient3d(a, b, c, d) <= 0) {
+      const Vec3 m = (a + b + c + d) / 4;
+      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": a tetrahedron at (" + std::to_string(m.x()) + ", " +
+                         std::to_string(m.y()) + ", " + std::to_string(m.z()) + ") came out inside out (a defect of the mesher)");
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 namespace pipeline {
@@ -213,19 +265,27 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   // even joined with its neighbours (brep_cells.hpp): the whole route then runs again on a finer
   // proxy, whose facets bulge less.
   const double first_angle = proxy_angle(opt.sizing);
-  // The last resort (a tetrahedron of four boundary nodes left inverted for the global flips,
-  // brep_cells.hpp) only once the finer proxies have failed: on the third proxy, then, should
-  // that fail too, on the first (a very coarse curvature bound, 3 elements per turn, can leave the
-  // finer proxies' cells no better off).
-  constexpr int kProxyAttempts = 4;  // the proxy's angle, a half and a third of it, then the first again
+  // The last resort (a cell's tetrahedra left inverted for the global optimisation's flips and
+  // fold refill, brep_cells.hpp, optimize/inverted_refill.hpp) is allowed on every proxy: a
+  // finer proxy has more cells, and more cut lines across the curved faces make worse surface
+  // angles (sphere-in-box.brep at 1e5: 1,425 cells on the third proxy, surface angle 1.4 deg,
+  // 0.21% of the tetrahedra under 10 deg, 14.6 s; 618 cells on the second with the last resort,
+  // 3.8 deg, 0.02%, 6.2 s). A fold the refill cannot mend, or an order-2 element no straightening
+  // makes positive, sends the route on to the next proxy too (corpus/Cone_1.brep at order 2
+  // meshes so: its first proxy leaves a nearly flat tetrahedron at the apex).
+  constexpr int kProxyAttempts = 3;  // the proxy's angle, a half and a third of it
   // The walls' cap (size/wall_thickness.hpp) makes finer grids beside curved faces, which can
   // leave a cell that none of the fills above takes (FreeCAD's constraint_tie at 6,044); when
   // the first two proxies have failed with it, the attempts start again without it, so that the
-  // cap improves a mesh and never costs one.
-  bool use_walls = true;
+  // cap improves a mesh and never costs one. Where no wall was found thin enough to cap anything,
+  // that second round would only repeat the first; after a failure past the fill (a fold, an
+  // order-2 element) it is not tried: the cap is not what folds (corpus/Zylkopf.brep at order 2
+  // failed six times over, 176 s).
+  bool use_walls = true, walls_found = false;
+  TetMesh out;
   for (int attempt = 0;; ++attempt) {
-    const double angle = attempt < 3 ? first_angle / (1 + attempt) : first_angle;
-    const bool last_resort_allowed = attempt >= 2;
+    const double angle = first_angle / (1 + attempt);
+    bool filled_cells = false;  // a failure after the fill: a fold or an order-2 element
     try {
     const auto t_dec = Clock::now();
     std::function<bool(double)> dec_progress;
@@ -247,6 +307,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     // the count search's coarser rounds (kWallSizeFactor: elements no larger than a wall is thick)
     const std::vector<size::WallSample> walls =
         use_walls ? size::wall_thickness(in, dc.proxy.tess, 4 * np / size::kWallSizeFactor) : std::vector<size::WallSample>{};
+    walls_found = walls_found || !walls.empty();
     size::SizeSamplingCache sampling;  // the geometry's samples, evaluated once for every round below
     double best_miss = 1e300;
     for (int filling = 0; filling < 2; ++filling) {
@@ -297,7 +358,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       pipeline::BrepCellCounts cell_counts;
       util::ProgressPoll jobs_poll(jobs_progress);
       const std::vector<pipeline::CellJob> jobs =
-          pipeline::brep_cell_jobs(in, dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion, last_resort_allowed,
+          pipeline::brep_cell_jobs(in, dc.d, placed.grids, placed.X, placed.P, placed.cells, opt.delaunay_insertion,
                                    &cell_counts, [&jobs_poll](double x) {
                                      jobs_poll.at(x);
                                      return jobs_poll.cancelled();
@@ -322,58 +383,18 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       scale = count / predicted_raw;
       np *= std::cbrt(count / want);
     }
+    filled_cells = true;
+    // the optimisation and the assembly inside the attempt: a fold the last resort left that its
+    // refill cannot mend (optimize/inverted_refill.hpp) sends the route on to the next proxy
+    out = optimise_and_assemble(in, opt, &best, filled, &st, progress);
       break;
     } catch (const MeshingError& e) {
-      if (use_walls && attempt >= 1) use_walls = false, attempt = -1;
+      if (use_walls && walls_found && attempt >= 1 && !filled_cells) use_walls = false, attempt = -1;
       else if (attempt >= kProxyAttempts - 1) throw;
       const double total = st.total;
       st = GenerateStats{};
       st.total = total;
       best = {}, filled = {};
-    }
-  }
-  best.on_boundary.resize(best.X.size(), 0);  // helpers the cells kept are inside
-  st.graded_nodes = best.graded_nodes;
-  st.helper_nodes = filled.helper_nodes, st.helpers_removed = filled.helpers_removed;
-  st.refilled_cells = filled.refilled;
-  st.skipped_nodes = filled.skipped_nodes, st.flips = filled.flips;
-  st.surface_min_angle = best.grids.min_angle_deg;
-  // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
-  const auto t_opt = Clock::now();
-  tet::TetComplex cx(best.X);
-  // Stop within the complex's build and its constraints (0.4 s and more at 2e5 tetrahedra)
-  util::ProgressPoll build_poll(progress);
-  build_poll.at(kBar.filled);
-  if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
-  cx.build(std::move(filled.tets), std::move(filled.region));
-  std::unordered_set<tet::FaceKey, tet::FaceKeyHash> held;
-  for (const pipeline::FacePiece& piece : best.grids.pieces)
-    for (const auto& t : piece.tris) {
-      held.insert(tet::face_key(t[0], t[1], t[2]));
-      if (piece.cell_in < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
-    }
-  cx.constrain(held);
-  cx.cancelled = nullptr;
-  cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
-  std::function<bool(double)> optimize_progress;
-  if (progress) optimize_progress = [&](double x) { return progress(kBar.built + (kBar.optimized - kBar.built) * x); };
-  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best.X, best.on_boundary, opt.optimize, optimize_progress);
-  st.flips += oc.flips;
-  st.sliver_moves = oc.sliver_moves;
-  st.optimize = since(t_opt);
-  if (progress && !progress(kBar.optimized)) throw Cancelled();
-  util::ProgressPoll assembly_poll(progress);
-  assembly_poll.at(kBar.optimized);
-  TetMesh out = pipeline::assemble_brep_mesh(best.grids, cx, best.X, in, opt.order, &st.straightened_edges,
-                                             [&assembly_poll] { return assembly_poll.cancelled(); });
-  // no mesh leaves inside out: a stage's slip is an error naming the place, not a bad mesh
-  for (std::size_t t = 0; t < out.num_tets(); ++t) {
-    const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
-               &d = out.nodes[out.tet_node(t, 3)];
-    if (geom::orient3d(a, b, c, d) <= 0) {
-      const Vec3 m = (a + b + c + d) / 4;
-      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": a tetrahedron at (" + std::to_string(m.x()) + ", " +
-                         std::to_string(m.y()) + ", " + std::to_string(m.z()) + ") came out inside out (a defect of the mesher)");
     }
   }
   if (progress && !progress(1.0)) throw Cancelled();

@@ -63,7 +63,7 @@ CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const s
       std::vector<Vec3> P;
       P.reserve(out.global.size() + 1);
       for (Index v : out.global) P.push_back((*proxy)[v]);
-      out.tets = fill_in_proxy(X, P, boundary, interior, job.centre_p, delaunay, &out.stats, job.keep_fixed_inverted);
+      out.tets = fill_in_proxy(X, P, boundary, interior, job.centre_p, delaunay, &out.stats, job.keep_inverted);
       out.moved.assign(X.begin(), X.begin() + static_cast<std::ptrdiff_t>(out.global.size()));
     } else {
       const std::size_t own = X.size();

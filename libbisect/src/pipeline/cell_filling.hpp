@@ -24,7 +24,7 @@ struct CellJob {
   // The B-rep route: fill in the proxy's geometry (proxy_fill.hpp) at the nodes' proxy positions
   // (fill_cell_jobs' P), the cell being convex there, when no point sees it whole as it is.
   bool in_proxy = false;
-  bool keep_fixed_inverted = false;  // in_proxy: the last resort (proxy_fill.hpp)
+  bool keep_inverted = false;  // in_proxy: the last resort, inverted tetrahedra kept (proxy_fill.hpp)
   // The B-rep route: filled by Delaunay boundary recovery (tet/recovery_fill.hpp), when neither
   // the star nor the proxy's geometry fills it
   bool recover = false;

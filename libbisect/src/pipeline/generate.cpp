@@ -111,6 +111,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize, optimize_progress);
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
+  st.refilled_folds = oc.refilled_folds;
   if (progress && !progress(1.0)) throw Cancelled();
   st.optimize = since(t_opt);
   TetMesh out = pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);
@@ -129,6 +130,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": \"" << s.count_floor_reason << "\", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
+    << ", \"refilled_folds\": " << s.refilled_folds
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
     << "}, \"quality\": " << quality_json(q) << "}";

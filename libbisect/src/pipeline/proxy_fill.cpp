@@ -68,7 +68,7 @@ bool chebyshev_centre(const std::vector<Vec3>& X, const std::vector<tet::Tet>& t
 
 std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, const std::vector<std::array<Index, 3>>& boundary,
                                     const std::vector<Index>& interior, const Vec3& centroid_p, bool delaunay, tet::CellFillStats* stats,
-                                    bool keep_fixed_inverted) {
+                                    bool keep_inverted) {
   const std::size_t before = P.size();
   std::vector<tet::Tet> tets = tet::fill_convex_cell(P, boundary, interior, centroid_p, delaunay, stats);
   for (std::size_t v = before; v < P.size(); ++v) X.push_back(P[v]);  // a helper: inside, away from the moved boundary
@@ -90,10 +90,7 @@ std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, 
       if (inverted(t))
         for (Index v : t)
           if (!fixed[v]) bad.push_back(v);
-    if (bad.empty()) {  // none inverted, or only ones with no node free to move
-      if (keep_fixed_inverted) return tets;
-      break;
-    }
+    if (bad.empty()) break;  // none inverted, or only ones with no node free to move
     std::sort(bad.begin(), bad.end());
     bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     bool moved = false;
@@ -124,6 +121,7 @@ std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, 
     }
     if (!moved) break;
   }
+  if (keep_inverted) return tets;
   for (const tet::Tet& t : tets)
     if (inverted(t))
       throw MeshingError("a tetrahedron made in the proxy's geometry turns inside out on the true surfaces and cannot be untangled");

@@ -19,11 +19,11 @@ namespace bisect::pipeline {
 // X, P: the cell's nodes at their true and proxy positions (the same ids; both get a helper node
 // when one is needed, X moves during the untangling). boundary, interior, centroid_p as for
 // tet::fill_convex_cell, in the proxy geometry. Throws MeshingError when the tetrahedra cannot
-// be untangled; with keep_fixed_inverted, a tetrahedron whose four nodes lie on the cell's
-// boundary (none can move) may stay inverted: the global optimisation's flips, across the cell's
-// faces, are left to repair it (the mesh is checked at the end).
+// be untangled; with keep_inverted (the last resort), what the untangling could not mend stays
+// inverted: the global optimisation's flips across the cell's faces and, after them, the fold's
+// refill (optimize/inverted_refill.hpp) are left to repair it (the mesh is checked at the end).
 std::vector<tet::Tet> fill_in_proxy(std::vector<Vec3>& X, std::vector<Vec3>& P, const std::vector<std::array<Index, 3>>& boundary,
                                     const std::vector<Index>& interior, const Vec3& centroid_p, bool delaunay, tet::CellFillStats* stats,
-                                    bool keep_fixed_inverted = false);
+                                    bool keep_inverted = false);
 
 }  // namespace bisect::pipeline
