@@ -11,9 +11,9 @@
 namespace bisect::optimize {
 namespace {
 
-// Layers of neighbours the hole may grow by, and its size past which it stops growing: a fold
-// the stars of its nodes do not hold is mended within a layer or two (sphere-in-box.brep at
-// 1.5e5 in the first hole, 60 tetrahedra); a hole of thousands is a mesh beyond mending here.
+// Layers of neighbours the hole may grow by, and its size past which it stops growing: the folds
+// sphere-in-box.brep leaves fill with the stars alone or a layer more (holes of 42 to 179
+// tetrahedra); a hole of thousands is a mesh beyond mending here.
 constexpr int kMaxLayers = 4;
 constexpr std::size_t kMaxHole = 4000;
 
@@ -27,7 +27,7 @@ std::vector<Index> all_inverted(const tet::TetComplex& cx, const std::vector<Vec
 }
 
 // The hole's boundary triangles (counter-clockwise from outside it) and its inner nodes; false
-// when an input face's node would be inside (never cut out).
+// when an input face's node, or a held face, would be inside (never cut out).
 bool hole_shape(const tet::TetComplex& cx, const std::vector<Index>& hole, const std::vector<char>& fixed,
                 std::vector<std::array<Index, 3>>* boundary, std::vector<Index>* inner) {
   boundary->clear(), inner->clear();
@@ -36,7 +36,10 @@ bool hole_shape(const tet::TetComplex& cx, const std::vector<Index>& hole, const
     for (int f = 0; f < 4; ++f) {
       all.push_back(cx.tet[t][f]);
       const Index n = cx.nb[t][f];
-      if (n >= 0 && std::binary_search(hole.begin(), hole.end(), n)) continue;
+      if (n >= 0 && std::binary_search(hole.begin(), hole.end(), n)) {
+        if (cx.is_constrained(t, f)) return false;
+        continue;
+      }
       boundary->push_back(cx.face(t, f));
       on.insert(on.end(), boundary->back().begin(), boundary->back().end());
     }
@@ -171,8 +174,8 @@ RefillCounts refill_inverted(tet::TetComplex& cx, const std::vector<Vec3>& X, co
     // an earlier hole may have taken it (its id perhaps reused by a positive tetrahedron)
     if (!cx.alive[t0] || !inverted(X, cx.tet[t0])) continue;
     // first the stars of the fold's own free nodes, then the hole closed over the folds next to
-    // it (sphere-in-box.brep: at 2e5, 1 of 4 folds filled only so, at 3e5, 3 of 3)
-    // (each fold on its own: one that fails in a cluster's hole may fill in its own)
+    // it (sphere-in-box.brep: at 2e5, 1 of 4 folds filled only so, at 3e5, 3 of 3); each fold
+    // is tried on its own, as one that fails in a cluster's hole may fill in its own
     for (const bool closed : {false, true}) {
       std::vector<Index> hole{t0};
       std::vector<Index> opened;  // free nodes whose stars are in the hole
