@@ -146,6 +146,31 @@ void grow(const tet::TetComplex& cx, std::vector<Index>* hole) {
   hole->erase(std::unique(hole->begin(), hole->end()), hole->end());
 }
 
+// Whether the new tetrahedra's outer faces are exactly the hole's boundary triangles, each once
+// and turned the same way: what TetComplex::replace needs, checked before it (it throws halfway
+// through, the complex changed: FreeCAD's constraint_tie at 6,044, order 2, ended in its error).
+bool fills_exactly(const std::vector<tet::Tet>& fresh, const std::vector<std::array<Index, 3>>& boundary) {
+  std::vector<std::array<Index, 3>> outer, want;
+  const auto sorted = [](std::array<Index, 3> k) {
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<std::array<Index, 3>> all;
+  for (const tet::Tet& t : fresh)
+    for (int f = 0; f < 4; ++f) all.push_back(sorted({t[(f + 1) % 4], t[(f + 2) % 4], t[(f + 3) % 4]}));
+  std::sort(all.begin(), all.end());
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i + 1;
+    while (j < all.size() && all[j] == all[i]) ++j;
+    if (j - i > 2) return false;
+    if (j - i == 1) outer.push_back(all[i]);
+    i = j;
+  }
+  for (const auto& t : boundary) want.push_back(sorted(t));
+  std::sort(want.begin(), want.end());
+  return outer == want;
+}
+
 // The hole filled, grown by a layer (then opened up again) while that fails; true when filled.
 template <typename OpenUp>
 bool fill_layers(tet::TetComplex& cx, const std::vector<Vec3>& X, const std::vector<char>& fixed, std::vector<Index>* hole,
@@ -159,7 +184,7 @@ bool fill_layers(tet::TetComplex& cx, const std::vector<Vec3>& X, const std::vec
     }
     if (!hole_shape(cx, *hole, fixed, &boundary, &inner)) continue;
     const std::vector<tet::Tet> fresh = fill_hole(X, boundary, inner);
-    if (fresh.empty()) continue;  // the hole's boundary folds too: a layer more
+    if (fresh.empty() || !fills_exactly(fresh, boundary)) continue;  // the hole's boundary folds too: a layer more
     cx.improve_around(cx.replace(*hole, fresh));
     return true;
   }

@@ -280,10 +280,9 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   // cap improves a mesh and never costs one. Where no wall was found thin enough to cap anything,
   // that second round would only repeat the first; after a failure past the fill (a fold, an
   // order-2 element) it is not tried: the cap is not what folds (corpus/Zylkopf.brep at order 2
-  // failed six times over, 176 s). Two failures past the fill end the route: each costs a whole
-  // mesh (Zylkopf: 60 s a proxy, on all three).
+  // failed six times over, 176 s; now three, 185 s, as each costs a whole mesh: FreeCAD's
+  // constraint_tie at 6,044, order 2, meshes only on its third proxy).
   bool use_walls = true, walls_found = false;
-  int late_failures = 0;
   // when every attempt fails, the first one's message: on the proxy the user's shape is tessellated
   // to, it names the B-rep faces where to look (a finer proxy can fail otherwise, in its own
   // numbering: corpus/Kurbelwelle.brep's third ends in the decomposition, naming proxy nodes)
@@ -396,9 +395,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       break;
     } catch (const MeshingError& e) {
       if (first_error.empty()) first_error = e.what();
-      late_failures += filled_cells;
       if (use_walls && walls_found && attempt >= 1 && !filled_cells) use_walls = false, attempt = -1;
-      else if (attempt >= kProxyAttempts - 1 || late_failures >= 2) throw MeshingError(first_error);
+      else if (attempt >= kProxyAttempts - 1) throw MeshingError(first_error);
       const double total = st.total;
       st = GenerateStats{};
       st.total = total;
