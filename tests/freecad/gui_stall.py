@@ -101,6 +101,20 @@ def open_panel(part):
     return panel
 
 
+def freecad_assign_stall(doc, femmesh, beat):
+    """The window's longest freeze while a plain FEM mesh object takes ``femmesh`` and its 3D view
+    draws it: what FreeCAD itself costs when any mesher's result enters the document."""
+    plain = doc.addObject("Fem::FemMeshObject", "PlainFemMesh")
+    settle(300)
+    beat.reset()
+    plain.FemMesh = femmesh
+    settle(1500)
+    stall = beat.longest()
+    doc.removeObject(plain.Name)
+    settle(300)
+    return stall
+
+
 def run():
     import FemGui
     import ObjectsFem
@@ -139,6 +153,13 @@ def run():
           "showed %.0f%%)" % (off, 100 * worst[0] / total, 100 * worst[1]))
 
     # -- OK: the mesh into the document and the 3D view ----------------------------------------
+    # FreeCAD's own part of OK, the same for any mesher's result: copying the FemMesh into the
+    # object's property and building its 3D view, both on the GUI thread. Measured with a plain
+    # FEM mesh object taking the same mesh, once before OK and once after, the larger kept: on a
+    # shared machine one such measurement alone varies by more than STALL_WITHIN (CI saw 1.48 s
+    # where this machine saw 1.99 s). OK may add at most STALL_WITHIN to it.
+    femmesh = panel.computed[1]
+    references = [freecad_assign_stall(doc, femmesh, beat)]
     beat.reset()
     dialog_button(QtGui.QDialogButtonBox.Ok).click()
     settle(1500)
@@ -146,20 +167,13 @@ def run():
     objs = [o for o in doc.Objects if mesh_object.is_mesh_object(o)]
     check(len(objs) == 1 and objs[0].FemMesh.VolumeCount == tets, "OK kept the mesh")
     obj = objs[0]
-    # FreeCAD's own part of OK, the same for any mesher's result: copying the FemMesh into the
-    # object's property and building its 3D view, both on the GUI thread. Measured here with a
-    # plain FEM mesh object taking the same mesh; OK may add at most STALL_WITHIN to it.
-    plain = doc.addObject("Fem::FemMeshObject", "PlainFemMesh")
-    settle(300)
-    beat.reset()
-    plain.FemMesh = obj.FemMesh
-    settle(1500)
-    figures["freecad_assign_stall"] = beat.longest()
-    doc.removeObject(plain.Name)
-    settle(300)
+    references.append(freecad_assign_stall(doc, femmesh, beat))
+    figures["freecad_assign_stalls"] = references
+    figures["freecad_assign_stall"] = max(references)
     check(figures["ok_stall"] < figures["freecad_assign_stall"] + STALL_WITHIN,
           "OK froze the window for %.2f s, of which FreeCAD's own copy of the mesh into a FEM mesh object and "
-          "its 3D view take %.2f s" % (figures["ok_stall"], figures["freecad_assign_stall"]))
+          "its 3D view take %.2f s (measured %s)" % (figures["ok_stall"], figures["freecad_assign_stall"],
+                                                     ", ".join("%.2f s" % r for r in references)))
 
     # -- the quality panel and its colouring ---------------------------------------------------
     select(obj)
