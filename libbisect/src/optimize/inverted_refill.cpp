@@ -6,6 +6,7 @@
 #include "geom/predicates.hpp"
 #include "optimize/node_stars.hpp"
 #include "tet/cell_fill.hpp"
+#include "tet/local_nodes.hpp"
 #include "tet/recovery_fill.hpp"
 
 namespace bisect::optimize {
@@ -62,42 +63,55 @@ bool hole_shape(const tet::TetComplex& cx, const std::vector<Index>& hole, const
 // mesh's nodes per try would cost more than the fill).
 std::vector<tet::Tet> fill_hole(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
                                 const std::vector<Index>& inner) {
-  std::vector<Index> global;
-  for (const auto& t : boundary) global.insert(global.end(), t.begin(), t.end());
-  global.insert(global.end(), inner.begin(), inner.end());
-  std::sort(global.begin(), global.end());
-  global.erase(std::unique(global.begin(), global.end()), global.end());
-  const auto local = [&](Index v) { return static_cast<Index>(std::lower_bound(global.begin(), global.end(), v) - global.begin()); };
-  std::vector<Vec3> Y;
-  for (Index v : global) Y.push_back(X[v]);
-  std::vector<std::array<Index, 3>> lb;
+  const tet::LocalNodes own(boundary, inner);
+  std::vector<Vec3> Y = own.points(X);
+  const std::vector<std::array<Index, 3>> lb = own.triangles(boundary);
+  const std::vector<Index> li = own.nodes(inner);
   Vec3 centroid = Vec3::Zero();
   double area = 0;
   for (const auto& t : boundary) {
-    lb.push_back({local(t[0]), local(t[1]), local(t[2])});
     const double a = (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]).norm();
     centroid += a * (X[t[0]] + X[t[1]] + X[t[2]]) / 3, area += a;
   }
   if (area > 0) centroid /= area;
-  std::vector<Index> li;
-  for (Index v : inner) li.push_back(local(v));
   std::vector<tet::Tet> tets;
   try {
     tets = tet::fill_convex_cell(Y, lb, li, centroid);
-    if (Y.size() != global.size()) tets.clear();
+    if (Y.size() != own.global.size()) tets.clear();
   } catch (const MeshingError&) {
   }
   if (tets.empty()) {
     try {
-      Y.resize(global.size());
+      Y.resize(own.global.size());
       tets = tet::fill_by_recovery(Y, lb, li);
     } catch (const MeshingError&) {
       return {};
     }
   }
   for (tet::Tet& t : tets)
-    for (Index& v : t) v = global[v];
+    for (Index& v : t) v = own.global[v];
   return tets;
+}
+
+void sort_unique(std::vector<Index>* v) {
+  std::sort(v->begin(), v->end());
+  v->erase(std::unique(v->begin(), v->end()), v->end());
+}
+
+// The stars (within `region`) of the free nodes of the tetrahedra `folds` that are not opened
+// yet go into the hole (unsorted); true when one was opened.
+bool open_stars(const tet::TetComplex& cx, const std::vector<char>& fixed, const std::vector<Index>& folds, Index region,
+                std::vector<Index>* hole, std::vector<Index>* opened) {
+  bool any = false;
+  for (Index t : folds)
+    for (Index v : cx.tet[t]) {
+      if (fixed[v] || std::find(opened->begin(), opened->end(), v) != opened->end()) continue;
+      opened->push_back(v);
+      for (Index u : star(cx, v, t))
+        if (cx.tag[u] == region) hole->push_back(u);
+      any = true;
+    }
+  return any;
 }
 
 // The hole closed over the fold: the stars of the free nodes of every inverted tetrahedron in it
@@ -108,7 +122,6 @@ void close_over_folds(const tet::TetComplex& cx, const std::vector<Vec3>& X, con
                       std::vector<Index>* opened) {
   const Index region = cx.tag[hole->front()];
   for (bool more = true; more;) {
-    more = false;
     std::vector<Index> folds;
     for (Index t : *hole) {
       if (inverted(X, cx.tet[t])) folds.push_back(t);
@@ -117,19 +130,11 @@ void close_over_folds(const tet::TetComplex& cx, const std::vector<Vec3>& X, con
         if (n >= 0 && !cx.is_constrained(t, f) && cx.tag[n] == region && inverted(X, cx.tet[n])) folds.push_back(n);
       }
     }
-    for (Index t : folds)
-      for (Index v : cx.tet[t]) {
-        if (fixed[v] || std::find(opened->begin(), opened->end(), v) != opened->end()) continue;
-        opened->push_back(v);
-        for (Index u : star(cx, v, t))
-          if (cx.tag[u] == region) hole->push_back(u);
-        more = true;
-      }
+    more = open_stars(cx, fixed, folds, region, hole, opened);
     // a fold of fixed nodes only, next to the hole, joins it too
     for (Index t : folds)
       if (std::find(hole->begin(), hole->end(), t) == hole->end()) hole->push_back(t), more = true;
-    std::sort(hole->begin(), hole->end());
-    hole->erase(std::unique(hole->begin(), hole->end()), hole->end());
+    sort_unique(hole);
   }
 }
 
@@ -142,12 +147,12 @@ void grow(const tet::TetComplex& cx, std::vector<Index>* hole) {
       if (n >= 0 && !cx.is_constrained(t, f) && cx.tag[n] == cx.tag[t] && !std::binary_search(was.begin(), was.end(), n))
         hole->push_back(n);
     }
-  std::sort(hole->begin(), hole->end());
-  hole->erase(std::unique(hole->begin(), hole->end()), hole->end());
+  sort_unique(hole);
 }
 
 // Whether the new tetrahedra's outer faces are exactly the hole's boundary triangles, each once
-// and turned the same way: what TetComplex::replace needs, checked before it (it throws halfway
+// (the fills make positively oriented tetrahedra, so their outer faces then face out of the
+// hole as its boundary does): what TetComplex::replace needs, checked before it (it throws halfway
 // through, the complex changed: FreeCAD's constraint_tie at 6,044, order 2, ended in its error).
 bool fills_exactly(const std::vector<tet::Tet>& fresh, const std::vector<std::array<Index, 3>>& boundary) {
   std::vector<std::array<Index, 3>> outer, want;
@@ -206,14 +211,8 @@ RefillCounts refill_inverted(tet::TetComplex& cx, const std::vector<Vec3>& X, co
       std::vector<Index> opened;  // free nodes whose stars are in the hole
       const auto open_up = [&] {
         if (closed) return close_over_folds(cx, X, fixed, &hole, &opened);
-        for (Index v : cx.tet[t0])
-          if (!fixed[v] && std::find(opened.begin(), opened.end(), v) == opened.end()) {
-            opened.push_back(v);
-            for (Index t : star(cx, v, t0))
-              if (cx.tag[t] == cx.tag[t0]) hole.push_back(t);
-          }
-        std::sort(hole.begin(), hole.end());
-        hole.erase(std::unique(hole.begin(), hole.end()), hole.end());
+        open_stars(cx, fixed, {t0}, cx.tag[t0], &hole, &opened);
+        sort_unique(&hole);
       };
       open_up();
       if (fill_layers(cx, X, fixed, &hole, open_up)) {
@@ -224,6 +223,17 @@ RefillCounts refill_inverted(tet::TetComplex& cx, const std::vector<Vec3>& X, co
   }
   n.remaining = all_inverted(cx, X).size();
   return n;
+}
+
+bool find_fold(const tet::TetComplex& cx, const std::vector<Vec3>& X, Vec3* centroid, Index* region) {
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    const tet::Tet& u = cx.tet[t];
+    if (!cx.alive[t] || !inverted(X, u)) continue;
+    *centroid = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
+    *region = cx.tag[t];
+    return true;
+  }
+  return false;
 }
 
 }  // namespace bisect::optimize

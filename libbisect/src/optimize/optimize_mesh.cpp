@@ -92,8 +92,13 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
   // before the sliver repair, which then sees what the refill made
   const RefillCounts refill = refill_inverted(cx, X, fixed);
   n.refilled_folds = static_cast<std::int64_t>(refill.refilled);
+  n.folds_left = static_cast<std::int64_t>(refill.remaining);
   relist();
-  if (opt.sliver_rounds > 0)
+  // no sliver repair over a fold: its Delaunay insertions take the tetrahedra as not
+  // overlapping, and over one they broke the complex (FreeCAD's constraint_tie at 6,044, order
+  // 2, first proxy: "a replacement does not fill the space it replaces"); the mesh is refused
+  // anyway, by the caller, naming the fold's place
+  if (opt.sliver_rounds > 0 && n.folds_left == 0)
     n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));
   if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
   cx.changed = outer_log;

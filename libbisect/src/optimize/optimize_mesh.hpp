@@ -19,6 +19,7 @@ struct OptimizeCounts {
   std::int64_t flips = 0;         // transformations applied
   std::int64_t sliver_moves = 0;  // node moves and insertions of the sliver repair
   std::int64_t refilled_folds = 0;  // inverted tetrahedra's neighbourhoods filled again (inverted_refill.hpp)
+  std::int64_t folds_left = 0;      // tetrahedra still inside out after the refill (no sliver repair then): refuse the mesh
 };
 
 // cx works on X; fixed[v]: node v never moves (X may grow: the sliver repair inserts nodes).

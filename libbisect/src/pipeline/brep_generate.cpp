@@ -12,6 +12,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "geom/predicates.hpp"
+#include "optimize/inverted_refill.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/brep_bodies.hpp"
 #include "pipeline/brep_boundary.hpp"
@@ -220,20 +221,33 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   st->sliver_moves = oc.sliver_moves;
   st->refilled_folds = oc.refilled_folds;
   st->optimize = since(t_opt);
+  const auto inside_out = [&](Index region, const Vec3& m) {
+    return MeshingError(in.source + ": " + solid_name(in, region) + ": a tetrahedron at " + point_name(m) +
+                        " came out inside out (a defect of the mesher)");
+  };
+  Vec3 fold;
+  Index fold_region = 0;
+  if (oc.folds_left > 0 && optimize::find_fold(cx, best->X, &fold, &fold_region)) throw inside_out(fold_region, fold);
   if (progress && !progress(kBar.optimized)) throw Cancelled();
   util::ProgressPoll assembly_poll(progress);
   assembly_poll.at(kBar.optimized);
   TetMesh out = pipeline::assemble_brep_mesh(best->grids, cx, best->X, in, opt.order, &st->straightened_edges,
                                              [&assembly_poll] { return assembly_poll.cancelled(); });
-  // no mesh leaves inside out: a stage's slip is an error naming the place, not a bad mesh
+  // no mesh leaves inside out, or with a tetrahedron flat to round-off: a stage's slip is an
+  // error naming the place (and the next proxy is tried), not a bad mesh. Flat: six times its
+  // volume, in floating point as a solver computes its Jacobian, under kFlat times its longest
+  // edge cubed (a regular tetrahedron: 0.71; a 0.1 degree sliver: about 1e-3; corpus/Cone_1.brep's
+  // first proxy left one of 1e-15 at the apex, smallest dihedral angle 1e-13 degrees, which the
+  // order-2 check refused while the 4-node mesh kept it)
+  constexpr double kFlat = 1e-10;
   for (std::size_t t = 0; t < out.num_tets(); ++t) {
     const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
                &d = out.nodes[out.tet_node(t, 3)];
-    if (geom::orient3d(a, b, c, d) <= 0) {
-      const Vec3 m = (a + b + c + d) / 4;
-      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": a tetrahedron at (" + std::to_string(m.x()) + ", " +
-                         std::to_string(m.y()) + ", " + std::to_string(m.z()) + ") came out inside out (a defect of the mesher)");
-    }
+    if (geom::orient3d(a, b, c, d) <= 0) throw inside_out(out.region[t], (a + b + c + d) / 4);
+    const double longest = std::max({(b - a).norm(), (c - a).norm(), (d - a).norm(), (c - b).norm(), (d - b).norm(), (d - c).norm()});
+    if (!((b - a).dot((c - a).cross(d - a)) > kFlat * longest * longest * longest))
+      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at " + point_name((a + b + c + d) / 4) +
+                         " is flat to round-off: a solver's Jacobian there is noise (a defect of the mesher)");
   }
   return out;
 }

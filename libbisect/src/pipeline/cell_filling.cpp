@@ -8,6 +8,7 @@
 #include "pipeline/proxy_fill.hpp"
 #include "bisect/quality.hpp"
 #include "tet/cell_fill.hpp"
+#include "tet/local_nodes.hpp"
 #include "tet/recovery_fill.hpp"
 #include "util/ordered_parallel.hpp"
 #include "util/progress_poll.hpp"
@@ -43,26 +44,16 @@ struct CellFilling {
 CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const std::vector<Vec3>* proxy, bool delaunay,
                      const std::function<bool()>& cancelled = {}) {
   CellFilling out;
-  std::vector<std::array<Index, 3>> boundary = job.boundary;
-  for (const auto& t : boundary) out.global.insert(out.global.end(), t.begin(), t.end());
-  out.global.insert(out.global.end(), job.interior.begin(), job.interior.end());
-  std::sort(out.global.begin(), out.global.end());
-  out.global.erase(std::unique(out.global.begin(), out.global.end()), out.global.end());
-  auto local = [&](Index v) { return static_cast<Index>(std::lower_bound(out.global.begin(), out.global.end(), v) - out.global.begin()); };
-  std::vector<Vec3> X;
-  X.reserve(out.global.size() + 1);
-  for (Index v : out.global) X.push_back(nodes[v]);
-  for (auto& t : boundary)
-    for (Index& v : t) v = local(v);
-  std::vector<Index> interior;
-  for (Index v : job.interior) interior.push_back(local(v));
+  const tet::LocalNodes own_ids(job.boundary, job.interior);
+  out.global = own_ids.global;
+  std::vector<Vec3> X = own_ids.points(nodes);
+  const std::vector<std::array<Index, 3>> boundary = own_ids.triangles(job.boundary);
+  const std::vector<Index> interior = own_ids.nodes(job.interior);
   try {
     if (job.recover) {
       out.tets = tet::fill_by_recovery(X, boundary, interior, &out.stats);
     } else if (job.in_proxy) {
-      std::vector<Vec3> P;
-      P.reserve(out.global.size() + 1);
-      for (Index v : out.global) P.push_back((*proxy)[v]);
+      std::vector<Vec3> P = own_ids.points(*proxy);
       out.tets = fill_in_proxy(X, P, boundary, interior, job.centre_p, delaunay, &out.stats, job.keep_inverted);
       out.moved.assign(X.begin(), X.begin() + static_cast<std::ptrdiff_t>(out.global.size()));
     } else {

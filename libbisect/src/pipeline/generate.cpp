@@ -10,10 +10,12 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "bisect/brep_input.hpp"  // point_name
 #include "bisect/errors.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/merge_facets.hpp"
 #include "geom/recentre.hpp"
+#include "optimize/inverted_refill.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
@@ -112,6 +114,10 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
   st.refilled_folds = oc.refilled_folds;
+  Vec3 fold;
+  Index fold_region = 0;
+  if (oc.folds_left > 0 && optimize::find_fold(cx, b.X, &fold, &fold_region))  // never a mesh with a fold
+    throw MeshingError(d.model.source + ": a tetrahedron at " + point_name(fold) + " came out inside out (a defect of the mesher)");
   if (progress && !progress(1.0)) throw Cancelled();
   st.optimize = since(t_opt);
   TetMesh out = pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);

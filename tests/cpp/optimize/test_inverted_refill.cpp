@@ -8,6 +8,7 @@
 
 #include "bisect/validate.hpp"
 #include "optimize/inverted_refill.hpp"
+#include "optimize/optimize_mesh.hpp"
 #include "tet/tet_complex.hpp"
 #include "tet/tet_test_meshes.hpp"
 
@@ -166,6 +167,41 @@ TEST(InvertedRefill, AValidMeshIsLeftAsItIs) {
   EXPECT_EQ(n.refilled, 0u);
   EXPECT_EQ(n.remaining, 0u);
   EXPECT_EQ(cx.tets(), c.tets);
+}
+
+// A fold no hole mends: a node of the cube's face (fixed, never inside a hole) pushed deep into
+// the cube. The refill leaves it, find_fold names where it is, and the optimisation reports it and
+// runs no sliver repair over it (its Delaunay insertions broke the complex over such a fold).
+TEST(InvertedRefill, AFoldOfAFixedNodeIsReportedNotRepaired) {
+  Cube c;
+  const Index pushed = test::grid_node(4, 0, 2, 2);
+  ASSERT_TRUE(c.fixed[pushed]);
+  c.X[pushed] = Vec3(2.6, 2.1, 2.05);
+  ASSERT_GE(inverted_count(c.X, c.tets), 1u);
+  TetComplex cx(c.X);
+  cx.build(c.tets);
+  std::vector<Vec3> X = c.X;
+  const OptimizeCounts n = optimize_mesh(cx, X, c.fixed, OptimizeOptions{});
+  EXPECT_GE(n.folds_left, 1);
+  EXPECT_EQ(static_cast<std::size_t>(n.folds_left), inverted_count(X, cx.tets()));
+  EXPECT_EQ(n.sliver_moves, 0);
+  EXPECT_EQ(X.size(), c.X.size()) << "the sliver repair inserted nodes over the fold";
+  Vec3 at;
+  Index region = -1;
+  ASSERT_TRUE(find_fold(cx, X, &at, &region));
+  EXPECT_EQ(region, 0);
+  EXPECT_TRUE(at.minCoeff() > 0 && at.maxCoeff() < 4) << "the fold's centroid " << at.transpose() << " is not in the cube";
+}
+
+TEST(InvertedRefill, NoFoldIsFoundInAValidMesh) {
+  Cube c;
+  TetComplex cx(c.X);
+  cx.build(c.tets);
+  Vec3 at;
+  Index region = -1;
+  EXPECT_FALSE(find_fold(cx, c.X, &at, &region));
+  std::vector<Vec3> X = c.X;
+  EXPECT_EQ(optimize_mesh(cx, X, c.fixed, OptimizeOptions{}).folds_left, 0);
 }
 
 }  // namespace
