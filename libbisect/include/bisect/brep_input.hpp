@@ -113,6 +113,18 @@ inline std::string point_name(const Vec3& p) {
   std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
   return text;
 }
+// " beside Face3, Face7, Face9 and 4 more" for B-rep faces (0-based ids, increasing, at most
+// `shown` named); empty for none: where a message says what the user can look at in FreeCAD.
+template <typename Faces>
+std::string beside_faces(const Faces& faces, std::size_t shown = 3) {
+  std::string out;
+  std::size_t listed = 0;
+  for (Index f : faces) {
+    if (listed == shown) return out + " and " + std::to_string(faces.size() - shown) + " more";
+    out += (listed++ ? ", " : " beside ") + face_name(f);
+  }
+  return out;
+}
 // Solid s of this input as FreeCAD names it in the whole shape.
 inline std::string solid_name(const BrepInput& in, Index s) {
   return solid_name(s >= 0 && s < static_cast<Index>(in.solids.size()) && in.solids[s].number >= 0 ? in.solids[s].number : s);

@@ -225,12 +225,13 @@ RefillCounts refill_inverted(tet::TetComplex& cx, const std::vector<Vec3>& X, co
   return n;
 }
 
-bool find_fold(const tet::TetComplex& cx, const std::vector<Vec3>& X, Vec3* centroid, Index* region) {
+bool find_fold(const tet::TetComplex& cx, const std::vector<Vec3>& X, Vec3* centroid, Index* region, tet::Tet* nodes) {
   for (std::size_t t = 0; t < cx.tet.size(); ++t) {
     const tet::Tet& u = cx.tet[t];
     if (!cx.alive[t] || !inverted(X, u)) continue;
     *centroid = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;
     *region = cx.tag[t];
+    if (nodes) *nodes = u;
     return true;
   }
   return false;

@@ -27,8 +27,8 @@ struct RefillCounts {
 // new tetrahedra are improved by the local transformations and go on cx.changed when it is set.
 RefillCounts refill_inverted(tet::TetComplex& cx, const std::vector<Vec3>& X, const std::vector<char>& fixed);
 
-// A tetrahedron of cx that is not positively oriented on X: its centroid and region tag (for
-// the message that refuses the mesh); false when there is none.
-bool find_fold(const tet::TetComplex& cx, const std::vector<Vec3>& X, Vec3* centroid, Index* region);
+// A tetrahedron of cx that is not positively oriented on X: its centroid, region tag and nodes
+// (for the message that refuses the mesh); false when there is none.
+bool find_fold(const tet::TetComplex& cx, const std::vector<Vec3>& X, Vec3* centroid, Index* region, tet::Tet* nodes = nullptr);
 
 }  // namespace bisect::optimize

@@ -91,17 +91,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
                point_name(job.centre);
     std::set<Index> faces;
     for (Index c : mem) faces.insert(brep_faces[c].begin(), brep_faces[c].end());
-    if (!faces.empty()) {
-      job.name += " beside";
-      int listed = 0;
-      for (Index f : faces) {
-        if (listed++ == 3) {
-          job.name += " and " + std::to_string(faces.size() - 3) + " more";
-          break;
-        }
-        job.name += (listed > 1 ? ", " : " ") + face_name(f);
-      }
-    }
+    job.name += beside_faces(faces);
     if (mem.size() > 1) job.name += " (joined with " + std::to_string(mem.size() - 1) + " neighbour" + (mem.size() > 2 ? "s)" : ")");
     return job;
   };

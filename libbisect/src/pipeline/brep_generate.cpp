@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <set>
 #include <string>
 #include <unordered_set>
 
@@ -221,13 +222,22 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   st->sliver_moves = oc.sliver_moves;
   st->refilled_folds = oc.refilled_folds;
   st->optimize = since(t_opt);
-  const auto inside_out = [&](Index region, const Vec3& m) {
-    return MeshingError(in.source + ": " + solid_name(in, region) + ": a tetrahedron at " + point_name(m) +
+  // the place, and the B-rep faces beside it (what a user can find in FreeCAD)
+  const auto inside_out = [&](Index region, const Vec3& m, const std::set<Index>& faces) {
+    return MeshingError(in.source + ": " + solid_name(in, region) + ": a tetrahedron at " + point_name(m) + beside_faces(faces) +
                         " came out inside out (a defect of the mesher)");
   };
   Vec3 fold;
   Index fold_region = 0;
-  if (oc.folds_left > 0 && optimize::find_fold(cx, best->X, &fold, &fold_region)) throw inside_out(fold_region, fold);
+  tet::Tet fold_nodes{};
+  if (oc.folds_left > 0 && optimize::find_fold(cx, best->X, &fold, &fold_region, &fold_nodes)) {
+    std::set<Index> faces;  // those the fold's nodes lie on (the grids' node ids are the complex's)
+    for (const pipeline::FacePiece& piece : best->grids.pieces)
+      for (const auto& t : piece.tris)
+        for (Index v : t)
+          if (std::find(fold_nodes.begin(), fold_nodes.end(), v) != fold_nodes.end()) faces.insert(piece.face);
+    throw inside_out(fold_region, fold, faces);
+  }
   if (progress && !progress(kBar.optimized)) throw Cancelled();
   util::ProgressPoll assembly_poll(progress);
   assembly_poll.at(kBar.optimized);
@@ -243,7 +253,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   for (std::size_t t = 0; t < out.num_tets(); ++t) {
     const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
                &d = out.nodes[out.tet_node(t, 3)];
-    if (geom::orient3d(a, b, c, d) <= 0) throw inside_out(out.region[t], (a + b + c + d) / 4);
+    if (geom::orient3d(a, b, c, d) <= 0) throw inside_out(out.region[t], (a + b + c + d) / 4, {});
     const double longest = std::max({(b - a).norm(), (c - a).norm(), (d - a).norm(), (c - b).norm(), (d - b).norm(), (d - c).norm()});
     if (!((b - a).dot((c - a).cross(d - a)) > kFlat * longest * longest * longest))
       throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at " + point_name((a + b + c + d) / 4) +

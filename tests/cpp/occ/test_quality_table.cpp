@@ -78,7 +78,9 @@ TEST_P(QualityTable, GoodElementsAtEveryCount) {
               q.alpha.mean, why.empty() ? "" : "; short: ", why.c_str());
   EXPECT_GE(q.dihedral_min.min, b.dihedral) << model << " at " << R;
   EXPECT_GE(q.alpha.mean, R >= 1000 ? b.alpha_fine : b.alpha) << model << " at " << R;
-  if (st.count_floor > 0) EXPECT_FALSE(st.count_floor_reason.empty()) << model;
+  if (st.count_floor > 0) {
+    EXPECT_FALSE(st.count_floor_reason.empty()) << model;
+  }
 }
 
 std::vector<Run> runs() {

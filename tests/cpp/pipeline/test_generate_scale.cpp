@@ -78,7 +78,9 @@ void check_at(const std::string& rel, std::int64_t n, double grading = 0) {
   GenerateStats st;
   const TetMesh m = generate_mesh(in, opt, &st);
   expect_sound(m, in, rel);
-  if (grading > 0) EXPECT_GT(st.graded_nodes, 0) << rel;
+  if (grading > 0) {
+    EXPECT_GT(st.graded_nodes, 0) << rel;
+  }
   const double count = static_cast<double>(m.num_tets());
   if (std::abs(count - static_cast<double>(n)) > 0.2 * static_cast<double>(n)) {
     EXPECT_GT(st.count_floor, n) << rel << ": " << count << " tetrahedra";
