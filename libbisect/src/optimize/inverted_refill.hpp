@@ -19,8 +19,8 @@ namespace bisect::optimize {
 
 struct RefillCounts {
   std::size_t refilled = 0;   // folds cut out and filled again
-  std::size_t remaining = 0;  // tetrahedra still not positively oriented afterwards (the callers'
-                              // own orientation check, after the sliver repair, is what refuses)
+  std::size_t remaining = 0;  // tetrahedra still not positively oriented afterwards (optimize_mesh
+                              // then skips the sliver repair and reports them as folds_left)
 };
 
 // cx works on X; fixed[v]: node v lies on an input face or interface (never inside a hole). The

@@ -29,9 +29,9 @@ const std::map<std::string, std::string> kNotYet = {
     {"cube_filet.brep", "edges bound one face only, where the shell is open (Edge"},
     // the proxy's coarse facets cross at every proxy tried, named by their B-rep face
     {"Block.brep", "degrees (" + std::string(BISECT_SHARED_DIR) + "/models/corpus/Block.brep: Face478's tessellation folds: two of its facets intersect at ("},
-    // a fold that the optimisation and its refill leave on every proxy (at order 2 the first
-    // proxy's message: the fold is caught before the assembly; Cone_1, flat at its apex on the
-    // first proxy, meshes on the second since a failure past the fill tries the next proxy;
+    // a fold that the optimisation and its refill leave on every proxy, caught before the
+    // assembly at both orders (the first proxy's message is raised; Cone_1, flat at its apex on
+    // the first proxy, meshes on the second since a failure past the fill tries the next proxy:
     // CorpusCone below)
     {"Zylkopf.brep", "came out inside out"},
     // a cell no fill takes: the true surface bulges past the cell's other faces
