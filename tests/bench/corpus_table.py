@@ -11,8 +11,7 @@ Writes corpus_table.csv, corpus_table.json and corpus_table.md (the README's tab
 defaults: ../shared, build/bench, every shape (SHAPEs named: only those, their rows replacing
 the ones of the last run in OUT_DIR). BISECTMESH_BUILD_MOD (default build/Mod/BisectMesh)
 is the workbench to load; CORPUS_TIMEOUT the seconds one shape may take in all (default 1800).
-The pass/fail form is tests/cpp/occ/test_corpus.cpp (the CLI) and the corpus case of
-tests/freecad/test_shape_models.py.
+The pass/fail form is tests/cpp/occ/test_corpus.cpp (the library, as the CLI calls it).
 """
 import csv
 import json

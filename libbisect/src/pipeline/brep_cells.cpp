@@ -20,6 +20,32 @@ struct Side {
   bool outward;
 };
 
+// Drops the triangles that `boundary` holds both ways round: together they bound no volume (a cut
+// face of one triangle whose three corners a face piece's grid also joins: the pocket of
+// piece_against_proxy.hpp where the piece could not be mended). The cell beside the cut face
+// keeps the triangle, as the mesh's boundary.
+void drop_two_sided(std::vector<std::array<Index, 3>>& boundary) {
+  auto key = [](std::array<Index, 3> t) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  std::map<std::array<Index, 3>, std::size_t> at;
+  for (std::size_t i = 0; i < boundary.size(); ++i) at.emplace(key(boundary[i]), i);
+  std::vector<char> drop(boundary.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    const auto& t = boundary[i];
+    auto it = at.find(key({t[0], t[2], t[1]}));
+    if (it == at.end() || drop[i] || drop[it->second]) continue;
+    drop[i] = drop[it->second] = 1, any = true;
+  }
+  if (!any) return;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+    if (!drop[i]) boundary[kept++] = boundary[i];
+  boundary.resize(kept);
+}
+
 }  // namespace
 
 std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d, const BrepGrids& g, const std::vector<Vec3>& X,
@@ -82,6 +108,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
             if (!on_boundary.count(v)) inside.insert(v);
       job.interior.insert(job.interior.end(), inside.begin(), inside.end());
     }
+    drop_two_sided(job.boundary);
     job.centre = volume > 0 ? Vec3(centre / volume) : cells[root].centre;
     job.centre_p = cells[root].centre_p;
     job.region = d.cells[root].source_region;

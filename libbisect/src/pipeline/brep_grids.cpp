@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "pipeline/piece_against_proxy.hpp"
 #include "surface/analytic_surfaces.hpp"
 #include "surface/region_mesher.hpp"
 #include "util/ordered_parallel.hpp"
@@ -20,11 +21,16 @@ struct CellSide {
   bool outward;
 };
 
+using CutFacesAt = std::map<std::pair<Index, Index>, std::vector<Index>>;  // model edge (lo, hi) -> the cut faces on it
+
 // A piece to mesh: its B-rep face, its cells, and its model faces, each with the direction to
-// take its loops in (so that they run counter-clockwise around the outward normal of cell_out).
+// take its loops in (so that they run counter-clockwise around the outward normal of cell_out);
+// cuts: the decomposition's cut faces by model edge, to tell which grid triangles lie in a cut
+// plane (piece_against_proxy.hpp).
 struct PieceJob {
   Index face = -1, cell_out = -1, cell_in = -1;
   std::vector<std::pair<Index, bool>> faces;  // model face, reversed
+  const CutFacesAt* cuts = nullptr;
 };
 
 // One mesh made on a thread: local nodes -> global ones (-1: a new inner node), the new nodes,
@@ -221,16 +227,28 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
   };
   std::vector<std::pair<Index, bool>> faces = job.faces;
   const auto loops = chain_loops(bd, surf, faces);
+  std::vector<std::vector<Index>> node_cuts;  // per local boundary node: the cut faces it lies on
   for (const auto& loop : loops) {
-    // the loop's nodes in order with the proxy face each came through
+    // the loop's nodes in order with the proxy face each came through, and the cut faces each
+    // lies on (a model node: those of the edges on both sides of it)
     std::vector<std::pair<Index, Index>> seq;  // (global node, proxy face)
-    for (const DirEdge& e : loop) {
+    std::vector<std::vector<Index>> seq_cuts;
+    auto cuts_of = [&](const DirEdge& e) {
+      auto it = job.cuts->find({std::min(e.a, e.b), std::max(e.a, e.b)});
+      return it == job.cuts->end() ? std::vector<Index>{} : it->second;
+    };
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const DirEdge& e = loop[k];
+      const std::vector<Index> here = cuts_of(e);
+      std::vector<Index> at_a = cuts_of(loop[(k + loop.size() - 1) % loop.size()]);
+      at_a.insert(at_a.end(), here.begin(), here.end());
       seq.push_back({e.a, e.proxy});
+      seq_cuts.push_back(at_a);
       auto it = bd.edge_nodes.find({std::min(e.a, e.b), std::max(e.a, e.b)});
       if (it == bd.edge_nodes.end()) throw MeshingError(where + ": a model edge was not discretised");
       std::vector<Index> inner = it->second;
       if (e.a > e.b) std::reverse(inner.begin(), inner.end());
-      for (Index v : inner) seq.push_back({v, e.proxy});
+      for (Index v : inner) seq.push_back({v, e.proxy}), seq_cuts.push_back(here);
     }
     std::vector<Vec2> uv(seq.size());
     std::vector<char> pole(seq.size(), 0);
@@ -244,11 +262,15 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
       }
     }
     std::vector<Index> lloop;
+    auto take = [&](Index l, std::size_t i) {
+      lloop.push_back(l);
+      node_cuts.resize(out.global.size());
+      node_cuts[l].insert(node_cuts[l].end(), seq_cuts[i].begin(), seq_cuts[i].end());
+    };
     for (std::size_t i = 0; i < seq.size(); ++i) {
       const Index g = seq[i].first;
       if (pole[i]) {
         // the pole as a segment of the parameter plane: from the previous node's u to the next
-        // one's, at the pole's v
         // one's, at the pole's v, in steps of a 32nd of the u range: the triangles round the
         // pole each take the copy nearest them in u, so that none spans round it and folds
         const Vec2 prev = uv[(i + seq.size() - 1) % seq.size()], next = uv[(i + 1) % seq.size()];
@@ -257,18 +279,18 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
         for (int k = 0; k <= steps; ++k) {
           const double u = prev.x() + (next.x() - prev.x()) * k / steps;
           if (k > 0 && u == prev.x()) break;
-          lloop.push_back(add_node(g, Vec2(u, uv[i].y())));
+          take(add_node(g, Vec2(u, uv[i].y())), i);
         }
         continue;
       }
       auto it = local.find(g);
       if (it != local.end() && (rb.uv[it->second] - uv[i]).norm() <= 1e-12 * (1 + uv[i].norm())) {
-        lloop.push_back(it->second);
+        take(it->second, i);
         continue;
       }
       const Index l = add_node(g, uv[i]);
       local[g] = l;
-      lloop.push_back(l);
+      take(l, i);
     }
     rb.loops.push_back(std::move(lloop));
   }
@@ -299,8 +321,10 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
       }
     }
   }
+  mend_cut_ears(surf, rm, node_cuts, rb.uv.size());
   // the new inner nodes: on the face; their proxy point is the same parameters' point on the
-  // proxy triangle holding them (planar faces: the point itself), for the morph's samples
+  // proxy triangle holding them (planar faces: the point itself), for the morph's samples; when
+  // no triangle holds them, the nearest point of the piece's proxy faces (piece_against_proxy.hpp)
   std::vector<Index> proxy_tris;
   for (const auto& [f, rev] : faces)
     if (bd.px.face_tri[bd.model.faces[f].source] >= 0) proxy_tris.push_back(bd.model.faces[f].source);
@@ -324,6 +348,7 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
         p = l0 * bd.model.nodes[tri[0]] + l1 * bd.model.nodes[tri[1]] + l2 * bd.model.nodes[tri[2]];
       }
     }
+    if (best > 1e-9 && !proxy_tris.empty()) p = nearest_on_faces(bd.model, faces, rm.xyz[v], &on.proxy);
     if (on.proxy < 0) on.proxy = faces.front().first >= 0 ? bd.model.faces[faces.front().first].source : -1;
     out.global.push_back(-1);
     out.uv.push_back(rm.uv[v]);
@@ -484,6 +509,12 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
   std::vector<Index> cut_faces;
   for (std::size_t f = 0; f < m.faces.size(); ++f)
     if (m.faces[f].alive && m.faces[f].source < 0) cut_faces.push_back(static_cast<Index>(f));
+  CutFacesAt cuts_at;
+  for (Index f : cut_faces)
+    for (const auto& loop : m.faces[f].loops)
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        cuts_at[{std::min(loop[i], loop[(i + 1) % loop.size()]), std::max(loop[i], loop[(i + 1) % loop.size()])}].push_back(f);
+  for (PieceJob& j : jobs) j.cuts = &cuts_at;
   // the model edges each job's boundary uses
   auto job_edges = [&](std::size_t k) {
     std::vector<std::pair<Index, Index>> out;

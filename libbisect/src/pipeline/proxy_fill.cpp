@@ -52,9 +52,14 @@ bool chebyshev_centre(const std::vector<Vec3>& X, const std::vector<tet::Tet>& t
           Eigen::Vector4d r;
           const std::size_t pick[4] = {a, b, c, d};
           for (int j = 0; j < 4; ++j) A.row(j) << u[pick[j]].x(), u[pick[j]].y(), u[pick[j]].z(), -1.0, r(j) = e[pick[j]];
-          Eigen::FullPivLU<Eigen::Matrix4d> lu(A);
-          if (!lu.isInvertible()) continue;
-          const Eigen::Vector4d xs = lu.solve(r);
+          // the closed-form 4x4 inverse: these solves are most of an untangling's time (a star of
+          // 40 planes has 91,390 fours; FullPivLU took 12% of corpus/x_ring.brep's meshing)
+          Eigen::Matrix4d inv;
+          bool invertible = false;
+          double det = 0;
+          A.computeInverseAndDetWithCheck(inv, det, invertible, 1e-12);
+          if (!invertible) continue;
+          const Eigen::Vector4d xs = inv * r;
           if (xs(3) <= best_s) continue;
           const Vec3 x(xs(0), xs(1), xs(2));
           bool ok = true;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <queue>
+#include <utility>
 
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
@@ -48,15 +50,36 @@ Index TetComplex::locate(const Vec3& p, Index start) const {
     rot = rot * 1103515245u + 12345u;
     rot >>= 3;
   }
-  for (std::size_t k = 0; k < tet.size(); ++k) {  // the walk did not settle: look everywhere
-    if (!alive[k]) continue;
-    bool in = true;
-    for (int f = 0; f < 4 && in; ++f) {
-      const auto fv = face(static_cast<Index>(k), f);
-      in = orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) <= 0;
+  // The walk did not settle (it met the boundary round a dent of a cell that is not convex, as
+  // Delaunay boundary recovery fills): the tetrahedra nearest p first, through their neighbours
+  // from where the walk stopped, then any left unreached. Scanning every tetrahedron for every
+  // such node took sphere-in-box at 2e5 from 36 s to 112 s once its cells were fewer and larger.
+  auto holds = [&](Index k) {
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(k, f);
+      if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) > 0) return false;
     }
-    if (in) return static_cast<Index>(k);
+    return true;
+  };
+  auto distance = [&](Index k) {
+    const Tet& q = tet[k];
+    return (0.25 * (X[q[0]] + X[q[1]] + X[q[2]] + X[q[3]]) - p).squaredNorm();
+  };
+  std::vector<char> seen(tet.size(), 0);
+  std::priority_queue<std::pair<double, Index>, std::vector<std::pair<double, Index>>, std::greater<>> near;
+  near.push({distance(t), t});
+  seen[t] = 1;
+  while (!near.empty()) {
+    const Index k = near.top().second;
+    near.pop();
+    if (holds(k)) return k;
+    for (int f = 0; f < 4; ++f) {
+      const Index u = nb[k][f];
+      if (u >= 0 && alive[u] && !seen[u]) seen[u] = 1, near.push({distance(u), u});
+    }
   }
+  for (std::size_t k = 0; k < tet.size(); ++k)
+    if (alive[k] && !seen[k] && holds(static_cast<Index>(k))) return static_cast<Index>(k);
   return -1;
 }
 

@@ -162,11 +162,13 @@ TEST(BrepRouteCompSolid, OneConformingMeshWithAnInterface) {
   }
 }
 
-// The fold refill (optimize/inverted_refill.hpp) in the route: sphere-in-box at 2·10^5 leaves
-// last-resort cells whose folds the global passes do not undo (at 1.5·10^5 and up the route
-// ended "came out inside out" before the refill came); they are cut out and filled again, and
-// the mesh is valid, with no tetrahedron under 5 degrees.
-TEST(BrepRouteCompSolid, FoldsOfLastResortCellsAreFilledAgain) {
+// sphere-in-box at 2·10^5, the sphere's cells thin against its bulge: from 1.5·10^5 up the route
+// ended "came out inside out"; then its last-resort cells left folds that the refill
+// (optimize/inverted_refill.hpp, tested on its own in test_inverted_refill.cpp) cut out and filled
+// again on the second proxy (618 cells, 4 folds). Since the face grids' triangles in a cut plane
+// are mended (pipeline/piece_against_proxy.hpp), the first proxy's 93 cells all fill and no fold
+// is left. The mesh is valid, at the count, with no tetrahedron under 5 degrees.
+TEST(BrepRouteCompSolid, SphereInBoxAtTwoHundredThousandIsValid) {
   const std::string path = std::string(BISECT_SHARED_DIR) + "/models/sphere-in-box.brep";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing";
   GenerateOptions opt;
@@ -175,7 +177,6 @@ TEST(BrepRouteCompSolid, FoldsOfLastResortCellsAreFilledAgain) {
   const TetMesh m = generate_brep_mesh(load_brep_file(path), opt, &st);
   const auto violations = validate(m);
   EXPECT_TRUE(violations.empty()) << violations.front().message;
-  EXPECT_GE(st.refilled_folds, 1) << "no fold to refill: the test no longer reaches the refill";
   EXPECT_NEAR(static_cast<double>(m.num_tets()), 200000, 40000);
   const QualitySummary q = summarize_quality(element_quality(m));
   EXPECT_GT(q.dihedral_min.min, 5.0);

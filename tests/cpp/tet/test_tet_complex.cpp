@@ -246,5 +246,50 @@ TEST(TetComplex, TwoTwoFlipTakesTheBoundarysOtherDiagonal) {
   EXPECT_EQ(on.surface_tag.size(), 6u);  // four sides and the two new bottom triangles
 }
 
+// Point location in a complex that is not convex (Delaunay boundary recovery fills cells that
+// are not star-shaped): five unit cubes in a U, each in six tetrahedra round its diagonal. From
+// one arm the walk towards a point of the other meets the boundary at the gap between the arms
+// (no face on the way has a neighbour); the search from there, nearest tetrahedra first, still
+// finds the one holding the point, and a point in the gap is in none.
+TEST(TetComplex, LocateFindsAPointRoundADent) {
+  std::vector<Vec3> X;
+  std::vector<Tet> tets;
+  auto node = [&](const Vec3& p) {
+    for (std::size_t i = 0; i < X.size(); ++i)
+      if ((X[i] - p).norm() < 1e-12) return static_cast<Index>(i);
+    X.push_back(p);
+    return static_cast<Index>(X.size() - 1);
+  };
+  for (const Vec3& o : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), Vec3(2, 1, 0)}) {
+    const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& p : perms) {
+      const Vec3 a = Vec3::Unit(p[0]), b = a + Vec3::Unit(p[1]);
+      Tet t{node(o), node(o + a), node(o + b), node(o + Vec3(1, 1, 1))};
+      if (geom::orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) < 0) std::swap(t[2], t[3]);
+      tets.push_back(t);
+    }
+  }
+  TetComplex cx(X);
+  cx.build(tets);
+  expect_consistent(cx);
+  auto holds = [&](Index t, const Vec3& p) {
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = cx.face(t, f);
+      if (geom::orient3d(cx.X[fv[0]], cx.X[fv[1]], cx.X[fv[2]], p) > 0) return false;
+    }
+    return true;
+  };
+  Index start = -1;  // a tetrahedron of one arm
+  for (std::size_t t = 0; t < cx.tet.size() && start < 0; ++t)
+    if (holds(static_cast<Index>(t), Vec3(2.5, 1.6, 0.4))) start = static_cast<Index>(t);
+  ASSERT_GE(start, 0);
+  for (const Vec3& p : {Vec3(0.5, 1.5, 0.5), Vec3(0.2, 1.9, 0.1), Vec3(1.5, 0.5, 0.5)}) {
+    const Index t = cx.locate(p, start);
+    ASSERT_GE(t, 0) << p.transpose();
+    EXPECT_TRUE(holds(t, p)) << p.transpose();
+  }
+  EXPECT_EQ(cx.locate(Vec3(1.5, 1.5, 0.5), start), -1);  // the gap
+}
+
 }  // namespace
 }  // namespace bisect::tet
