@@ -34,6 +34,9 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 // arctangent (min_solid_angle = 2 atan of it).
 double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// The smallest corner angle of the triangle a, b, c in 3D (radians): the surface grids' measure.
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
 // cancelled (optional) is asked every 4096 tetrahedra; true stops with Cancelled.
 std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled = {});

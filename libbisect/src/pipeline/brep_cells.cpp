@@ -25,17 +25,13 @@ struct Side {
 // piece_against_proxy.hpp where the piece could not be mended). The cell beside the cut face
 // keeps the triangle, as the mesh's boundary.
 void drop_two_sided(std::vector<std::array<Index, 3>>& boundary) {
-  auto key = [](std::array<Index, 3> t) {
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    return t;
-  };
   std::map<std::array<Index, 3>, std::size_t> at;
-  for (std::size_t i = 0; i < boundary.size(); ++i) at.emplace(key(boundary[i]), i);
+  for (std::size_t i = 0; i < boundary.size(); ++i) at.emplace(tet::smallest_first(boundary[i]), i);
   std::vector<char> drop(boundary.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < boundary.size(); ++i) {
     const auto& t = boundary[i];
-    auto it = at.find(key({t[0], t[2], t[1]}));
+    auto it = at.find(tet::smallest_first({t[0], t[2], t[1]}));
     if (it == at.end() || drop[i] || drop[it->second]) continue;
     drop[i] = drop[it->second] = 1, any = true;
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "bisect/quality.hpp"
 #include "pipeline/piece_against_proxy.hpp"
 #include "surface/analytic_surfaces.hpp"
 #include "surface/region_mesher.hpp"
@@ -444,10 +445,7 @@ Made mesh_cut_face(const BrepBoundary& bd, Index fi, const size::SizeField& h, c
   return out;
 }
 
-double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto at = [](const Vec3& p, const Vec3& q, const Vec3& r) { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)); };
-  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)}) * 180 / M_PI;
-}
+double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_min_angle(a, b, c) * 180 / M_PI; }
 
 }  // namespace
 

@@ -2,18 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <map>
+
+#include "bisect/quality.hpp"
 
 namespace bisect::pipeline {
 namespace {
 
 using Tri = std::array<Index, 3>;
-
-double min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto at = [](const Vec3& p, const Vec3& q, const Vec3& r) { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)); };
-  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
-}
 
 }  // namespace
 
@@ -31,7 +27,7 @@ int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const 
     return false;
   };
   auto normal = [&](const Tri& t) { return Vec3((rm.xyz[t[1]] - rm.xyz[t[0]]).cross(rm.xyz[t[2]] - rm.xyz[t[0]])); };
-  auto quality = [&](const Tri& t) { return min_angle(rm.xyz[t[0]], rm.xyz[t[1]], rm.xyz[t[2]]); };
+  auto quality = [&](const Tri& t) { return triangle_min_angle(rm.xyz[t[0]], rm.xyz[t[1]], rm.xyz[t[2]]); };
   // directed edge -> its triangle
   std::map<std::pair<Index, Index>, std::size_t> owner;
   auto own = [&](std::size_t ti) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "bisect/quality.hpp"
 #include "geom/predicates.hpp"
 #include "surface/projected_chart.hpp"
 #include "surface/uv_triangulation.hpp"
@@ -25,10 +26,6 @@ constexpr double kMinAngle = 30 * kPi / 180;
 constexpr double kShortEdge = 0.55;
 // A new node no nearer an existing one than this many sizes.
 constexpr double kNearest = 0.45;
-
-double angle_at(const Vec3& p, const Vec3& q, const Vec3& r) { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)); }
-
-double min_angle(const Vec3& a, const Vec3& b, const Vec3& c) { return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}); }
 
 // T with |T du|^2 = du^T (J^T J) du: the surface's first fundamental form at uv, made definite
 // where it degenerates (a pole) by a small multiple of its trace.
@@ -160,7 +157,7 @@ class Mesher {
     const double longest = std::max({l0, l1, l2}), shortest = std::min({l0, l1, l2});
     *large = longest > kLongEdge * *h;
     if (*large) return true;
-    return shortest > kShortEdge * *h && min_angle(a, b, c) < kMinAngle;
+    return shortest > kShortEdge * *h && triangle_min_angle(a, b, c) < kMinAngle;
   }
 
   void refine() {
@@ -231,7 +228,7 @@ class Mesher {
 
   double tri_min_angle(const UvTri& T) const {
     if (degenerate(T)) return kPi;  // a pole's triangle goes at the end
-    return min_angle(xyz_[T.v[0]], xyz_[T.v[1]], xyz_[T.v[2]]);
+    return triangle_min_angle(xyz_[T.v[0]], xyz_[T.v[1]], xyz_[T.v[2]]);
   }
 
   // Angle-first swaps (5.5): an interior edge takes the quadrilateral's other diagonal when the

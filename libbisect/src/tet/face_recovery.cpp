@@ -80,15 +80,11 @@ double volume6(const std::vector<Vec3>& X, const Tet& t) {
 // way or is one of the hole's faces, each of those met once, and the volumes agree.
 bool fills(const TetComplex& dt, const std::vector<Index>& cavity, const std::vector<Tet>& fresh) {
   const std::vector<std::array<Index, 3>> hole = hole_faces(dt, cavity);
-  auto turned = [](std::array<Index, 3> f) {
-    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    return f;
-  };
   std::multiset<std::array<Index, 3>> open;  // new faces not yet matched, turned out of their tetrahedron
   for (const Tet& t : fresh) {
     for (const auto& f : std::array<std::array<Index, 3>, 4>{{{t[1], t[2], t[3]}, {t[0], t[3], t[2]}, {t[0], t[1], t[3]}, {t[0], t[2], t[1]}}}) {
-      const auto k = turned(f);
-      const auto back = turned({f[0], f[2], f[1]});
+      const auto k = smallest_first(f);
+      const auto back = smallest_first({f[0], f[2], f[1]});
       const auto it = open.find(back);
       if (it != open.end()) open.erase(it);
       else open.insert(k);
@@ -96,7 +92,7 @@ bool fills(const TetComplex& dt, const std::vector<Index>& cavity, const std::ve
   }
   if (open.size() != hole.size()) return false;
   for (const auto& f : hole) {
-    const auto it = open.find(turned(f));
+    const auto it = open.find(smallest_first(f));
     if (it == open.end()) return false;
     open.erase(it);
   }

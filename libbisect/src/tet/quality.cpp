@@ -25,6 +25,11 @@ bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y())
 
 }  // namespace
 
+double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto at = [](const Vec3& p, const Vec3& q, const Vec3& r) { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)); };
+  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
+}
+
 double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return 2 * std::atan(min_solid_angle_tan_half(a, b, c, d));
 }

@@ -12,15 +12,6 @@
 #include "tet/face_recovery.hpp"
 
 namespace bisect::tet {
-namespace {
-
-// The boundary triangle's nodes rotated so that the smallest comes first (orientation kept).
-std::array<Index, 3> rotated(const std::array<Index, 3>& t) {
-  const int k = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
-  return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
-}
-
-}  // namespace
 
 std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
                                   const std::vector<Index>& interior, CellFillStats* stats) {
@@ -65,8 +56,8 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
   // boundary triangles that are not faces restored by local re-triangulation (face_recovery.hpp)
   recover_faces(dt, boundary);
   // every boundary triangle a face, seen from the tetrahedron it bounds inside
-  std::unordered_map<FaceKey, std::array<Index, 3>, FaceKeyHash> wanted;  // key -> triangle, rotated
-  for (const auto& t : boundary) wanted[face_key(t[0], t[1], t[2])] = rotated(t);
+  std::unordered_map<FaceKey, std::array<Index, 3>, FaceKeyHash> wanted;  // key -> triangle, smallest node first
+  for (const auto& t : boundary) wanted[face_key(t[0], t[1], t[2])] = smallest_first(t);
   std::vector<char> side(dt.tet.size(), 0);  // 1 inside, 2 outside
   std::size_t found = 0;
   for (std::size_t t = 0; t < dt.tet.size(); ++t) {
@@ -77,7 +68,7 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
       if (it == wanted.end()) continue;
       // the triangle's outward normal leaves the cell: the tetrahedron whose face turns the same
       // way lies inside
-      const bool inside = rotated(fc) == it->second;
+      const bool inside = smallest_first(fc) == it->second;
       const char mark = inside ? 1 : 2;
       if (side[t] != 0 && side[t] != mark) throw MeshingError("boundary recovery: a tetrahedron lies on both sides of the boundary");
       side[t] = mark;

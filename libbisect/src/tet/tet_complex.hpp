@@ -31,6 +31,12 @@ struct FaceKey {
   bool operator==(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
 };
 FaceKey face_key(Index a, Index b, Index c);
+// A triangle's nodes turned so that the smallest comes first: equal for the same triangle with the
+// same orientation, whichever node it starts from (face_key forgets the orientation).
+inline std::array<Index, 3> smallest_first(const std::array<Index, 3>& t) {
+  const int k = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+  return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+}
 struct FaceKeyHash {
   std::size_t operator()(const FaceKey& k) const {
     return (static_cast<std::size_t>(k.a) * 73856093u) ^ (static_cast<std::size_t>(k.b) * 19349663u) ^ (static_cast<std::size_t>(k.c) * 83492791u);
