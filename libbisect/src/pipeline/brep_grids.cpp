@@ -323,39 +323,54 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
     }
   }
   mend_cut_ears(surf, rm, node_cuts, rb.uv.size());
-  // the new inner nodes: on the face; their proxy point is the same parameters' point on the
-  // proxy triangle holding them (planar faces: the point itself), for the morph's samples; when
-  // no triangle holds them, the nearest point of the piece's proxy faces (piece_against_proxy.hpp)
+  // the inner nodes: on the face; their proxy point is the same parameters' point on the proxy
+  // triangle holding them (planar faces: the point itself), for the morph's samples; when no
+  // triangle holds them, the nearest point of the piece's proxy faces (piece_against_proxy.hpp)
   std::vector<Index> proxy_tris;
   for (const auto& [f, rev] : faces)
     if (bd.px.face_tri[bd.model.faces[f].source] >= 0) proxy_tris.push_back(bd.model.faces[f].source);
-  const std::size_t nb = rb.uv.size();
-  for (std::size_t v = nb; v < rm.uv.size(); ++v) {
-    PointOn on;
+  auto place = [&](const Vec2& uv, const Vec3& x, PointOn& on) {
     on.kind = PointOn::kFace, on.id = job.face;
-    Vec3 p = rm.xyz[v];
+    Vec3 at = x;
     double best = 1e300;
     for (Index s : proxy_tris) {
       const auto& tri = bd.px.tess.faces[job.face].tris[bd.px.face_tri[s]];
       const auto& tuv = bd.px.tess.faces[job.face].uv[bd.px.face_tri[s]];
       // barycentric in the parameter plane; the least negative weight picks the triangle
-      const Vec2 e1 = tuv[1] - tuv[0], e2 = tuv[2] - tuv[0], q = rm.uv[v] - tuv[0];
+      const Vec2 e1 = tuv[1] - tuv[0], e2 = tuv[2] - tuv[0], q = uv - tuv[0];
       const double det = e1.x() * e2.y() - e1.y() * e2.x();
       if (std::abs(det) < 1e-300) continue;
       const double l1 = (q.x() * e2.y() - q.y() * e2.x()) / det, l2 = (e1.x() * q.y() - e1.y() * q.x()) / det, l0 = 1 - l1 - l2;
       const double outside = -std::min({l0, l1, l2, 0.0});
       if (outside < best) {
         best = outside, on.proxy = s;
-        p = l0 * bd.model.nodes[tri[0]] + l1 * bd.model.nodes[tri[1]] + l2 * bd.model.nodes[tri[2]];
+        at = l0 * bd.model.nodes[tri[0]] + l1 * bd.model.nodes[tri[1]] + l2 * bd.model.nodes[tri[2]];
       }
     }
-    if (best > 1e-9 && !proxy_tris.empty()) p = nearest_on_faces(bd.model, faces, rm.xyz[v], &on.proxy);
+    if (best > 1e-9 && !proxy_tris.empty()) at = nearest_on_faces(bd.model, faces, x, &on.proxy);
     if (on.proxy < 0) on.proxy = faces.front().first >= 0 ? bd.model.faces[faces.front().first].source : -1;
+    return at;
+  };
+  const std::size_t nb = rb.uv.size();
+  std::vector<Vec3> p(rm.uv.size());
+  std::vector<PointOn> on(rm.uv.size());
+  for (std::size_t v = 0; v < rm.uv.size(); ++v) p[v] = v < nb ? bd.nodes.p[out.global[v]] : place(rm.uv[v], rm.xyz[v], on[v]);
+  auto off_cut = [&](Index f, const Vec3& q) {
+    const ModelFace& cut = bd.model.faces[f];
+    return std::abs(cut.normal.dot(q - bd.model.nodes[cut.loops[0][0]]));
+  };
+  auto proxy_at = [&](const Vec2& uv, const Vec3& x) {
+    PointOn unused;
+    return place(uv, x, unused);
+  };
+  mend_cut_chords(surf, rm, node_cuts, nb, p, proxy_at, off_cut);
+  for (std::size_t v = on.size(); v < rm.uv.size(); ++v) place(rm.uv[v], rm.xyz[v], on.emplace_back());
+  for (std::size_t v = nb; v < rm.uv.size(); ++v) {
     out.global.push_back(-1);
     out.uv.push_back(rm.uv[v]);
     out.x.push_back(rm.xyz[v]);
-    out.p.push_back(p);
-    out.on.push_back(on);
+    out.p.push_back(p[v]);
+    out.on.push_back(on[v]);
   }
   // the triangles turn so that their normals point out of cell_out: judged in 3D against the
   // piece's proxy facets (oriented the same way), not by the sign of an area in (u, v), which a

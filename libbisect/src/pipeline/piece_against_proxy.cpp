@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <map>
 
 #include "bisect/quality.hpp"
@@ -11,38 +12,71 @@ namespace {
 
 using Tri = std::array<Index, 3>;
 
+// A piece grid's triangles by directed edge, and the cut faces its boundary nodes lie on: what
+// both mends look up.
+class PieceEdges {
+ public:
+  PieceEdges(surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts, std::size_t boundary)
+      : rm_(rm), node_cuts_(node_cuts), boundary_(boundary) {
+    for (std::size_t ti = 0; ti < rm.tris.size(); ++ti) own(ti);
+  }
+  void own(std::size_t ti) {
+    const Tri& t = rm_.tris[ti];
+    for (int k = 0; k < 3; ++k) owner_[{t[k], t[(k + 1) % 3]}] = ti;
+  }
+  void disown(std::size_t ti) {
+    const Tri& t = rm_.tris[ti];
+    for (int k = 0; k < 3; ++k) owner_.erase({t[k], t[(k + 1) % 3]});
+  }
+  // the triangle holding directed edge (a, b), or -1
+  long owner(Index a, Index b) const {
+    auto it = owner_.find({a, b});
+    return it == owner_.end() ? -1 : static_cast<long>(it->second);
+  }
+  // the cut faces all of `nodes` lie on
+  std::vector<Index> shared_cuts(std::initializer_list<Index> nodes) const {
+    std::vector<Index> out;
+    bool first = true;
+    for (Index v : nodes) {
+      const auto i = static_cast<std::size_t>(v);
+      if (i >= boundary_ || i >= node_cuts_.size()) return {};
+      if (first) out = node_cuts_[i], first = false;
+      else
+        out.erase(std::remove_if(out.begin(), out.end(),
+                                 [&](Index f) { return std::find(node_cuts_[i].begin(), node_cuts_[i].end(), f) == node_cuts_[i].end(); }),
+                  out.end());
+    }
+    return out;
+  }
+  bool on_one_cut(const Tri& t) const { return !shared_cuts({t[0], t[1], t[2]}).empty(); }
+  // the far node of the triangle holding directed edge (a, b)
+  Index far(std::size_t ti, Index a, Index b) const {
+    for (Index w : rm_.tris[ti])
+      if (w != a && w != b) return w;
+    return -1;
+  }
+
+ private:
+  surface::RegionMesh& rm_;
+  const std::vector<std::vector<Index>>& node_cuts_;
+  std::size_t boundary_;
+  std::map<std::pair<Index, Index>, std::size_t> owner_;
+};
+
+Vec3 normal_of(const std::vector<Vec3>& x, const Tri& t) { return Vec3((x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]])); }
+
+double quality_of(const std::vector<Vec3>& x, const Tri& t) { return triangle_min_angle(x[t[0]], x[t[1]], x[t[2]]); }
+
 }  // namespace
 
 int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
                   std::size_t boundary) {
-  auto cuts = [&](Index v) -> const std::vector<Index>* {
-    const auto i = static_cast<std::size_t>(v);
-    return i < boundary && i < node_cuts.size() ? &node_cuts[i] : nullptr;
-  };
-  auto on_one_cut = [&](const Tri& t) {
-    const std::vector<Index>*a = cuts(t[0]), *b = cuts(t[1]), *c = cuts(t[2]);
-    if (!a || !b || !c) return false;
-    for (Index f : *a)
-      if (std::find(b->begin(), b->end(), f) != b->end() && std::find(c->begin(), c->end(), f) != c->end()) return true;
-    return false;
-  };
-  auto normal = [&](const Tri& t) { return Vec3((rm.xyz[t[1]] - rm.xyz[t[0]]).cross(rm.xyz[t[2]] - rm.xyz[t[0]])); };
-  auto quality = [&](const Tri& t) { return triangle_min_angle(rm.xyz[t[0]], rm.xyz[t[1]], rm.xyz[t[2]]); };
-  // directed edge -> its triangle
-  std::map<std::pair<Index, Index>, std::size_t> owner;
-  auto own = [&](std::size_t ti) {
-    const Tri& t = rm.tris[ti];
-    for (int k = 0; k < 3; ++k) owner[{t[k], t[(k + 1) % 3]}] = ti;
-  };
-  auto disown = [&](std::size_t ti) {
-    const Tri& t = rm.tris[ti];
-    for (int k = 0; k < 3; ++k) owner.erase({t[k], t[(k + 1) % 3]});
-  };
-  for (std::size_t ti = 0; ti < rm.tris.size(); ++ti) own(ti);
+  PieceEdges edges(rm, node_cuts, boundary);
+  auto normal = [&](const Tri& t) { return normal_of(rm.xyz, t); };
   int mended = 0;
   for (std::size_t ti = 0; ti < rm.tris.size(); ++ti) {
     const Tri t = rm.tris[ti];
-    if (!on_one_cut(t)) continue;
+    if (!edges.on_one_cut(t)) continue;
     const Vec3 n0 = normal(t);
     // the best flip: across edge (a, b) to the neighbour's far node d
     double best = -1;
@@ -50,22 +84,19 @@ int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const 
     Tri flip1{}, flip2{};
     for (int k = 0; k < 3; ++k) {
       const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      auto it = owner.find({b, a});
-      if (it == owner.end()) continue;
-      const Tri& u = rm.tris[it->second];
-      Index d = -1;
-      for (Index w : u)
-        if (w != a && w != b) d = w;
+      const long ui = edges.owner(b, a);
+      if (ui < 0) continue;
+      const Index d = edges.far(static_cast<std::size_t>(ui), a, b);
       const Tri t1{c, a, d}, t2{c, d, b};
-      const Vec3 along = n0 + normal(u);
-      if (!(normal(t1).dot(along) > 0 && normal(t2).dot(along) > 0) || on_one_cut(t1) || on_one_cut(t2)) continue;
-      const double q = std::min(quality(t1), quality(t2));
-      if (q > best) best = q, flip_with = it->second, flip1 = t1, flip2 = t2;
+      const Vec3 along = n0 + normal(rm.tris[ui]);
+      if (!(normal(t1).dot(along) > 0 && normal(t2).dot(along) > 0) || edges.on_one_cut(t1) || edges.on_one_cut(t2)) continue;
+      const double q = std::min(quality_of(rm.xyz, t1), quality_of(rm.xyz, t2));
+      if (q > best) best = q, flip_with = static_cast<std::size_t>(ui), flip1 = t1, flip2 = t2;
     }
     if (best >= 0) {
-      disown(ti), disown(flip_with);
+      edges.disown(ti), edges.disown(flip_with);
       rm.tris[ti] = flip1, rm.tris[flip_with] = flip2;
-      own(ti), own(flip_with);
+      edges.own(ti), edges.own(flip_with);
       ++mended;
       continue;
     }
@@ -85,12 +116,81 @@ int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const 
       rm.xyz.pop_back();
       continue;
     }
-    disown(ti);
+    edges.disown(ti);
     rm.tris[ti] = split[0];
     rm.tris.push_back(split[1]);
     rm.tris.push_back(split[2]);
-    own(ti), own(rm.tris.size() - 2), own(rm.tris.size() - 1);
+    edges.own(ti), edges.own(rm.tris.size() - 2), edges.own(rm.tris.size() - 1);
     ++mended;
+  }
+  return mended;
+}
+
+int mend_cut_chords(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
+                    std::size_t boundary, std::vector<Vec3>& p, const std::function<Vec3(const Vec2& uv, const Vec3& x)>& proxy_at,
+                    const std::function<double(Index f, const Vec3& q)>& off_cut) {
+  PieceEdges edges(rm, node_cuts, boundary);
+  // new triangles replacing t and u must turn as they did, on the surface and on the proxy
+  auto turn_as = [&](const Tri& t, const Tri& u, const std::vector<Tri>& repl) {
+    const Vec3 along_x = normal_of(rm.xyz, t) + normal_of(rm.xyz, u), along_p = normal_of(p, t) + normal_of(p, u);
+    for (const Tri& r : repl)
+      if (!(normal_of(rm.xyz, r).dot(along_x) > 0 && normal_of(p, r).dot(along_p) > 0)) return false;
+    return true;
+  };
+  auto worst = [&](const std::vector<Tri>& repl) {
+    double q = 1e300;
+    for (const Tri& r : repl) q = std::min(q, quality_of(rm.xyz, r));
+    return q;
+  };
+  int mended = 0;
+  for (std::size_t ti = 0; ti < rm.tris.size(); ++ti) {
+    for (int k = 0; k < 3; ++k) {
+      const Tri t = rm.tris[ti];
+      const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      const std::vector<Index> cuts = edges.shared_cuts({a, b});
+      const long ui = edges.owner(b, a);
+      if (cuts.empty() || ui < 0) continue;
+      const Tri u = rm.tris[ui];
+      const Index d = edges.far(static_cast<std::size_t>(ui), a, b);
+      // the flip to (c, d), unless that is a chord too
+      const std::vector<Tri> flip{Tri{c, a, d}, Tri{c, d, b}};
+      const double flip_q = edges.shared_cuts({c, d}).empty() && turn_as(t, u, flip) ? worst(flip) : -1;
+      // or a node between the two triangles, off the cut planes, joined to all four corners:
+      // tried at the quadrilateral's centre in (u, v) and at each triangle's
+      const Index m = static_cast<Index>(rm.uv.size());
+      const std::vector<Tri> split{Tri{a, d, m}, Tri{d, b, m}, Tri{b, c, m}, Tri{c, a, m}};
+      const double clear = 0.05 * (p[a] - p[b]).norm();
+      double split_q = -1;
+      Vec2 best_uv;
+      Vec3 best_x, best_p;
+      const std::array<Vec2, 3> tries{Vec2((rm.uv[a] + rm.uv[b] + rm.uv[c] + rm.uv[d]) / 4), Vec2((rm.uv[a] + rm.uv[b] + rm.uv[c]) / 3),
+                                      Vec2((rm.uv[a] + rm.uv[b] + rm.uv[d]) / 3)};
+      for (const Vec2& uv : tries) {
+        const Vec3 x = surf.point(uv), q = proxy_at(uv, x);
+        bool off = true;
+        for (Index f : cuts) off = off && off_cut(f, q) > clear;
+        if (!off) continue;
+        rm.uv.push_back(uv), rm.xyz.push_back(x), p.push_back(q);
+        if (turn_as(t, u, split) && worst(split) > split_q) split_q = worst(split), best_uv = uv, best_x = x, best_p = q;
+        rm.uv.pop_back(), rm.xyz.pop_back(), p.pop_back();
+      }
+      // the better of the two, unless it leaves a triangle with under half the smallest angle
+      // the two had: a needle on the surface costs more than the chord (the cell fill may still
+      // take the cell joined with a neighbour)
+      if (std::max(flip_q, split_q) < 0.5 * worst({t, u})) continue;
+      edges.disown(ti), edges.disown(static_cast<std::size_t>(ui));
+      if (flip_q >= split_q) {
+        rm.tris[ti] = flip[0], rm.tris[ui] = flip[1];
+        edges.own(ti), edges.own(static_cast<std::size_t>(ui));
+        ++mended;
+        continue;
+      }
+      rm.uv.push_back(best_uv), rm.xyz.push_back(best_x), p.push_back(best_p);
+      rm.tris[ti] = split[0], rm.tris[ui] = split[1];
+      rm.tris.push_back(split[2]), rm.tris.push_back(split[3]);
+      edges.own(ti), edges.own(static_cast<std::size_t>(ui)), edges.own(rm.tris.size() - 2), edges.own(rm.tris.size() - 1);
+      ++mended;
+    }
   }
   return mended;
 }

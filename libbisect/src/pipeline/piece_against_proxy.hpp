@@ -12,7 +12,18 @@
 //   (u, v) is a quadrilateral with a collapsed side; a B-spline face whose parameters are far
 //   from proportional to length over a coarse facet), that point is an extrapolation and may lie
 //   outside the cell: then it is the point of the piece's proxy faces nearest the node.
+// - A grid edge inside the piece with both ends on one cut face (a "chord") lies in that cut
+//   face's plane, since both ends do: the piece touches the cut face along it and the cell is
+//   pinched to no thickness there (corpus/wrenchnut.brep's B-spline faces; corpus/x_rod.brep's
+//   cylinder at a coarse size). The edge is flipped, or its two triangles are split at a node
+//   between them, whichever leaves the larger smallest angle; each change is checked in both the
+//   true and the proxy positions, since the cell is filled in either (a flip that keeps its
+//   triangles turned on the surface can turn them over on the proxy facet), and none leaves a
+//   triangle with under half the smallest angle the two had (a needle on the surface is worse for
+//   the user than a chord the cell fill copes with by joining the cell to a neighbour:
+//   corpus/x_ring.brep came out with a 0.03 degree surface triangle without that bound).
 #pragma once
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -30,6 +41,15 @@ namespace bisect::pipeline {
 // left for the cell fill to report.
 int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
                   std::size_t boundary);
+
+// The chords' mend (above), after mend_cut_ears. p: every node's proxy position (it grows with
+// the nodes the mend adds); proxy_at(uv, x): the proxy position of a new node at those parameters
+// and that surface point; off_cut(f, q): the distance of proxy point q from cut face f's plane.
+// Returns the number mended; a chord neither mends without a needle is left to the cell fill
+// (which joins the cell to a neighbour, or reports it).
+int mend_cut_chords(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
+                    std::size_t boundary, std::vector<Vec3>& p, const std::function<Vec3(const Vec2& uv, const Vec3& x)>& proxy_at,
+                    const std::function<double(Index f, const Vec3& q)>& off_cut);
 
 // The point of the model faces `faces` (first: model face id) nearest x; *source: the proxy face
 // (the model face's source) it lies on.
