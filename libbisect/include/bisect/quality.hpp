@@ -33,6 +33,9 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 // tan(Ω/2) of that smallest angle: increases with it, so comparisons may use it and skip the
 // arctangent (min_solid_angle = 2 atan of it).
 double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+// The same with the sign of the tetrahedron's volume (in floating point): negative for one that
+// is inside out, so that a key below every valid tetrahedron's marks it as the worst.
+double signed_min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 // The smallest corner angle of the triangle a, b, c in 3D (radians): the surface grids' measure.
 double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -34,7 +34,7 @@ double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   return 2 * std::atan(min_solid_angle_tan_half(a, b, c, d));
 }
 
-double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+double signed_min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   // Van Oosterom–Strackee at each corner i with edge vectors x, y, z of lengths X, Y, Z:
   // tan(Ω/2) = 6V / (XYZ + (x·y) Z + (x·z) Y + (y·z) X). One determinant and six lengths serve
   // the four corners and one division the minimum (this is the min-max criterion's key, the
@@ -43,7 +43,8 @@ double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, con
   // the largest positive denominator gives the smallest angle.
   const Vec3 ab = b - a, ac = c - a, ad = d - a, bc = c - b, bd = d - b, cd = d - c;
   const double lab = ab.norm(), lac = ac.norm(), lad = ad.norm(), lbc = bc.norm(), lbd = bd.norm(), lcd = cd.norm();
-  const double six_v = std::abs(ab.dot(ac.cross(ad)));
+  // six times the signed volume: the denominators below are the same for a mirrored tetrahedron
+  const double six_v = ab.dot(ac.cross(ad));
   // corner a: ab, ac, ad; b: -ab, bc, bd; c: -ac, -bc, cd; d: -ad, -bd, -cd
   const double da = lab * lac * lad + ab.dot(ac) * lad + ab.dot(ad) * lac + ac.dot(ad) * lab;
   const double db = lab * lbc * lbd - ab.dot(bc) * lbd - ab.dot(bd) * lbc + bc.dot(bd) * lab;
@@ -51,6 +52,10 @@ double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, con
   const double dd = lad * lbd * lcd + ad.dot(bd) * lcd + ad.dot(cd) * lbd + bd.dot(cd) * lad;
   const double most = std::max(std::max(da, db), std::max(dc, dd));
   return most > 0 ? six_v / most : 0;
+}
+
+double min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return std::abs(signed_min_solid_angle_tan_half(a, b, c, d));
 }
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

@@ -28,7 +28,9 @@ FaceKey face_key(Index a, Index b, Index c) {
 
 bool positive(const std::vector<Vec3>& X, const Tet& t) { return orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) > 0; }
 
-double tet_angle_key(const std::vector<Vec3>& X, const Tet& t) { return min_solid_angle_tan_half(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
+double tet_angle_key(const std::vector<Vec3>& X, const Tet& t) {
+  return signed_min_solid_angle_tan_half(X[t[0]], X[t[1]], X[t[2]], X[t[3]]);
+}
 
 void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   tet = std::move(tets);

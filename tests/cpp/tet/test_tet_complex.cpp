@@ -251,6 +251,31 @@ TEST(TetComplex, TwoTwoFlipTakesTheBoundarysOtherDiagonal) {
 // one arm the walk towards a point of the other meets the boundary at the gap between the arms
 // (no face on the way has a neighbour); the search from there, nearest tetrahedra first, still
 // finds the one holding the point, and a point in the gap is in none.
+TEST(TetComplex, TheKeyOfATetrahedronInsideOutIsNegative) {
+  const std::vector<Vec3> X = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.2, 0.3, 1)};
+  const double good = tet_angle_key(X, {0, 1, 2, 3});
+  EXPECT_GT(good, 0);
+  EXPECT_DOUBLE_EQ(tet_angle_key(X, {1, 0, 2, 3}), -good);  // the mirror image: the same angles
+  EXPECT_DOUBLE_EQ(min_solid_angle_tan_half(X[1], X[0], X[2], X[3]), good);
+}
+
+// Three tetrahedra round an edge d e that passes beside the triangle a b c instead of through it:
+// one of them is inside out. The 3-2 flip to a b c d and a c b e undoes it, though its two
+// tetrahedra are poorer than the inverted one's mirror image (smallest-angle keys 0.112 against
+// 0.150): the min-max criterion must count the fold as the worst, or it keeps it.
+TEST(TetComplex, ATransformationUndoesATetrahedronInsideOut) {
+  const std::vector<Vec3> X = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.9, 0.9, 1), Vec3(0.9, 0.9, -1)};
+  const Index a = 0, b = 1, c = 2, d = 3, e = 4;
+  const std::vector<Tet> ring = {{e, d, a, b}, {e, d, b, c}, {e, d, c, a}};
+  ASSERT_EQ(std::count_if(ring.begin(), ring.end(), [&](const Tet& t) { return !positive(X, t); }), 1);
+  TetComplex cx(X);
+  cx.build(ring);
+  EXPECT_GE(cx.improve_all(100), 1);
+  const std::vector<Tet> now = cx.tets();
+  ASSERT_EQ(now.size(), 2u);
+  for (const Tet& t : now) EXPECT_TRUE(positive(X, t));
+}
+
 TEST(TetComplex, LocateFindsAPointRoundADent) {
   std::vector<Vec3> X;
   std::vector<Tet> tets;
