@@ -7,6 +7,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/io.hpp"
+#include "bisect/json_text.hpp"
 #include "bisect/poly_input.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
@@ -35,20 +36,6 @@ std::string fmt(double v) {
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (c == '\n') out += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else out += c;
-  }
-  return out + "\"";
-}
-
 int info_3d(const std::string& path, const CommonOptions& opt, std::ostream& out) {
   const PolyInput in = read_polyhedral(path);
   const PolySummary s = summarize(in);

@@ -321,8 +321,9 @@ PYBIND11_MODULE(_core, m) {
       "on the surfaces with every Jacobian positive). Options as keywords (default_options()): elements or size, "
       "order, min_size, max_size, curvature_elements, chord_deviation, size_grading, regions ([{size, faces, "
       "edges, vertices, solids}] with FreeCAD's numbers from 1 or names like 'Face3'), optimize, smooth, slivers, "
-      "threads, insertion. write: a path to write the mesh to (.med keeps the groups Face<k>_Nodes, "
-      "Face<k>_Faces, Solid<r> that FreeCAD's FemMesh.read loads). arrays=False: return only 'stats'. Raises "
+      "threads, insertion. write: a path to write the mesh to as well: .vtu, .msh, .inp (ELSET Region<k> per "
+      "solid, NSET Face<k> per B-rep face) or .unv (groups Region<k> and Face<k>, which FreeCAD's FemMesh.read "
+      "loads). arrays=False: return only 'stats'. Raises "
       "InputError (a ValueError) naming FreeCAD's Face<k>, Edge<k> or Solid<k>, MeshingError, Cancelled.");
 
   m.def(

@@ -111,6 +111,11 @@ struct GenerateStats {
   // inverted tetrahedra (a last-resort cell's fold) whose neighbourhood the optimiser cut out and
   // filled again (optimize/inverted_refill.hpp)
   std::int64_t refilled_folds = 0;
+  // B-rep route: the proxies tried (1: the first one meshed; each failed one costs a whole
+  // decomposition, placement and filling), and when a later one meshed, what ended the first
+  // (its message, naming the place): why a run took two or three times its usual time
+  std::int64_t proxy_attempts = 0;
+  std::string proxy_retry_reason;
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

@@ -422,8 +422,9 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       if (use_walls && walls_found && attempt >= 1 && !filled_cells) use_walls = false, attempt = -1;
       else if (attempt >= kProxyAttempts - 1) throw MeshingError(first_error);
       const double total = st.total;
+      const std::int64_t tried = st.proxy_attempts + 1;
       st = GenerateStats{};
-      st.total = total;
+      st.total = total, st.proxy_attempts = tried;
       best = {}, filled = {};
     }
   }
@@ -451,6 +452,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   }
   st.nodes = static_cast<std::int64_t>(out.nodes.size());
   st.tets = static_cast<std::int64_t>(out.num_tets());
+  ++st.proxy_attempts;  // the one that meshed
+  st.proxy_retry_reason = first_error;
   st.total = since(t_all);
   if (stats) *stats = st;
   return out;

@@ -12,6 +12,7 @@
 
 #include "bisect/brep_input.hpp"  // point_name
 #include "bisect/errors.hpp"
+#include "bisect/json_text.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/merge_facets.hpp"
 #include "geom/recentre.hpp"
@@ -134,9 +135,10 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
-    << ", \"count_floor_reason\": \"" << s.count_floor_reason << "\", \"surface_min_angle\": " << s.surface_min_angle
+    << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
-    << ", \"refilled_folds\": " << s.refilled_folds
+    << ", \"refilled_folds\": " << s.refilled_folds << ", \"proxy_attempts\": " << s.proxy_attempts
+    << ", \"proxy_retry_reason\": " << json_string(s.proxy_retry_reason)
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
     << "}, \"quality\": " << quality_json(q) << "}";

@@ -97,9 +97,27 @@ TEST(CorpusCone, NoTetrahedronFlatToRoundOffAtOrderOne) {
   GenerateOptions opt;
   opt.sizing.elements = 20000;
   opt.order = 1;
-  const TetMesh m = generate_brep_mesh(load_brep_file(path), opt);
+  GenerateStats st;
+  const TetMesh m = generate_brep_mesh(load_brep_file(path), opt, &st);
   EXPECT_TRUE(validate(m).empty());
   EXPECT_GT(summarize_quality(element_quality(m)).dihedral_min.min, 1.0);
+  // the statistics say so, and why: what a user reads when the run took twice its time
+  EXPECT_EQ(st.proxy_attempts, 2);
+  EXPECT_NE(st.proxy_retry_reason.find("Cone_1.brep"), std::string::npos) << st.proxy_retry_reason;
+  const std::string json = generate_stats_json(st, summarize_quality(element_quality(m)));
+  EXPECT_NE(json.find("\"proxy_attempts\": 2"), std::string::npos) << json;
+}
+
+// A shape its first proxy meshes: one attempt, no reason.
+TEST(CorpusCone, AShapeTheFirstProxyMeshesTookOneAttempt) {
+  const std::string path = std::string(BISECT_SHARED_DIR) + "/models/corpus/x_full_sphere.brep";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing";
+  GenerateOptions opt;
+  opt.sizing.elements = 5000;
+  GenerateStats st;
+  generate_brep_mesh(load_brep_file(path), opt, &st);
+  EXPECT_EQ(st.proxy_attempts, 1);
+  EXPECT_TRUE(st.proxy_retry_reason.empty()) << st.proxy_retry_reason;
 }
 
 INSTANTIATE_TEST_SUITE_P(Shared, Corpus, ::testing::ValuesIn(corpus()), [](const ::testing::TestParamInfo<std::string>& info) {
