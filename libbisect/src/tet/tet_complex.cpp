@@ -161,6 +161,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     alive[o] = 0;
     free_.push_back(o);
   }
+  if (touched) touched->insert(touched->end(), old.begin(), old.end());
   std::vector<Index> ids;
   for (const Tet& t : fresh) {
     Index id;
@@ -187,6 +188,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     ids.push_back(id);
   }
   if (changed) changed->insert(changed->end(), ids.begin(), ids.end());
+  if (touched) touched->insert(touched->end(), ids.begin(), ids.end());
   // match every new face with another new one or with an old outside face: sorted by key,
   // equal keys meet (a new face pairs with at most one other)
   struct Side {

@@ -66,6 +66,10 @@ class TetComplex {
   // When set, `replace` and `moved` append the tetrahedra they make or change: the optimiser's
   // work lists follow the changes without a scan of the mesh.
   std::vector<Index>* changed = nullptr;
+  // When set, `replace` appends the ids it takes out and the ids it makes: a consumer that keeps
+  // its own per-tetrahedron data (face recovery's count of the present faces and edges) brings
+  // just those up to date.
+  std::vector<Index>* touched = nullptr;
   // When set, the long loops (the transformations' queue, the smoothing, the sliver repair) call
   // it now and then (every kPollEvery steps); true stops them with Cancelled. The optimiser sets
   // it from the progress callback, so that Stop takes effect within a pass.

@@ -276,6 +276,25 @@ TEST(TetComplex, ATransformationUndoesATetrahedronInsideOut) {
   for (const Tet& t : now) EXPECT_TRUE(positive(X, t));
 }
 
+// replace() logs the ids it takes out and those it makes on `touched` (face recovery keeps its
+// count of the present faces in step from it), and only while it is set.
+TEST(TetComplex, ReplaceLogsWhatItTookOutAndWhatItMade) {
+  const std::vector<Vec3> X = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.3, 0.3, 1), Vec3(0.3, 0.3, -1)};
+  const Index a = 0, b = 1, c = 2, d = 3, e = 4;
+  TetComplex cx(X);
+  cx.build({{e, d, a, b}, {e, d, b, c}, {e, d, c, a}});
+  for (const Tet& t : cx.tets()) ASSERT_TRUE(positive(X, t));
+  std::vector<Index> log;
+  cx.touched = &log;
+  const std::vector<Index> made = cx.replace({0, 1, 2}, {{a, b, c, d}, {a, c, b, e}});
+  cx.touched = nullptr;
+  ASSERT_EQ(log.size(), 5u);
+  EXPECT_EQ(std::vector<Index>(log.begin(), log.begin() + 3), (std::vector<Index>{0, 1, 2}));
+  EXPECT_EQ(std::vector<Index>(log.begin() + 3, log.end()), made);
+  cx.replace(made, {{e, d, a, b}, {e, d, b, c}, {e, d, c, a}});
+  EXPECT_EQ(log.size(), 5u);
+}
+
 TEST(TetComplex, LocateFindsAPointRoundADent) {
   std::vector<Vec3> X;
   std::vector<Tet> tets;
