@@ -26,7 +26,10 @@ class Present {
       if (dt.alive[t]) take(static_cast<Index>(t), +1);
     dt.touched = &touched_;
   }
-  ~Present() { dt_.touched = outer_; }
+  ~Present() {
+    if (outer_) outer_->insert(outer_->end(), touched_.begin(), touched_.end());  // what was not synced yet
+    dt_.touched = outer_;
+  }
   Present(const Present&) = delete;
   Present& operator=(const Present&) = delete;
   bool has_face(Index a, Index b, Index c) {
