@@ -33,22 +33,23 @@ class PieceEdges {
     auto it = owner_.find({a, b});
     return it == owner_.end() ? -1 : static_cast<long>(it->second);
   }
-  // the cut faces all of `nodes` lie on
+  // the cut faces all of `nodes` lie on (empty unless all are boundary nodes)
   std::vector<Index> shared_cuts(std::initializer_list<Index> nodes) const {
     std::vector<Index> out;
-    bool first = true;
-    for (Index v : nodes) {
-      const auto i = static_cast<std::size_t>(v);
-      if (i >= boundary_ || i >= node_cuts_.size()) return {};
-      if (first) out = node_cuts_[i], first = false;
-      else
-        out.erase(std::remove_if(out.begin(), out.end(),
-                                 [&](Index f) { return std::find(node_cuts_[i].begin(), node_cuts_[i].end(), f) == node_cuts_[i].end(); }),
-                  out.end());
-    }
+    if (!all_boundary(nodes)) return out;
+    for (Index f : node_cuts_[static_cast<std::size_t>(*nodes.begin())])
+      if (std::all_of(nodes.begin(), nodes.end(), [&](Index v) { return on_cut(v, f); })) out.push_back(f);
     return out;
   }
-  bool on_one_cut(const Tri& t) const { return !shared_cuts({t[0], t[1], t[2]}).empty(); }
+  // whether all of `nodes` lie on one cut face: asked of every triangle and edge, so without
+  // building the list (a copy per call cost a fine cylinder's grids 0.3 s)
+  bool share_a_cut(std::initializer_list<Index> nodes) const {
+    if (!all_boundary(nodes)) return false;
+    for (Index f : node_cuts_[static_cast<std::size_t>(*nodes.begin())])
+      if (std::all_of(nodes.begin(), nodes.end(), [&](Index v) { return on_cut(v, f); })) return true;
+    return false;
+  }
+  bool on_one_cut(const Tri& t) const { return share_a_cut({t[0], t[1], t[2]}); }
   // the far node of the triangle holding directed edge (a, b)
   Index far(std::size_t ti, Index a, Index b) const {
     for (Index w : rm_.tris[ti])
@@ -57,6 +58,17 @@ class PieceEdges {
   }
 
  private:
+  bool all_boundary(std::initializer_list<Index> nodes) const {
+    return std::all_of(nodes.begin(), nodes.end(), [&](Index v) {
+      const auto i = static_cast<std::size_t>(v);
+      return i < boundary_ && i < node_cuts_.size() && !node_cuts_[i].empty();
+    });
+  }
+  bool on_cut(Index v, Index f) const {
+    const std::vector<Index>& c = node_cuts_[static_cast<std::size_t>(v)];
+    return std::find(c.begin(), c.end(), f) != c.end();
+  }
+
   surface::RegionMesh& rm_;
   const std::vector<std::vector<Index>>& node_cuts_;
   std::size_t boundary_;
@@ -67,10 +79,18 @@ Vec3 normal_of(const std::vector<Vec3>& x, const Tri& t) { return Vec3((x[t[1]] 
 
 double quality_of(const std::vector<Vec3>& x, const Tri& t) { return triangle_min_angle(x[t[0]], x[t[1]], x[t[2]]); }
 
+// whether any of the first `boundary` nodes lies on a cut face (most pieces: none, nothing to mend)
+bool touches_a_cut(const std::vector<std::vector<Index>>& node_cuts, std::size_t boundary) {
+  for (std::size_t v = 0; v < std::min(boundary, node_cuts.size()); ++v)
+    if (!node_cuts[v].empty()) return true;
+  return false;
+}
+
 }  // namespace
 
 int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
                   std::size_t boundary) {
+  if (!touches_a_cut(node_cuts, boundary)) return 0;
   PieceEdges edges(rm, node_cuts, boundary);
   auto normal = [&](const Tri& t) { return normal_of(rm.xyz, t); };
   int mended = 0;
@@ -129,6 +149,7 @@ int mend_cut_ears(const ParametricSurface& surf, surface::RegionMesh& rm, const 
 int mend_cut_chords(const ParametricSurface& surf, surface::RegionMesh& rm, const std::vector<std::vector<Index>>& node_cuts,
                     std::size_t boundary, std::vector<Vec3>& p, const std::function<Vec3(const Vec2& uv, const Vec3& x)>& proxy_at,
                     const std::function<double(Index f, const Vec3& q)>& off_cut) {
+  if (!touches_a_cut(node_cuts, boundary)) return 0;
   PieceEdges edges(rm, node_cuts, boundary);
   // new triangles replacing t and u must turn as they did, on the surface and on the proxy
   auto turn_as = [&](const Tri& t, const Tri& u, const std::vector<Tri>& repl) {
@@ -147,14 +168,15 @@ int mend_cut_chords(const ParametricSurface& surf, surface::RegionMesh& rm, cons
     for (int k = 0; k < 3; ++k) {
       const Tri t = rm.tris[ti];
       const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      const std::vector<Index> cuts = edges.shared_cuts({a, b});
+      if (!edges.share_a_cut({a, b})) continue;
       const long ui = edges.owner(b, a);
-      if (cuts.empty() || ui < 0) continue;
+      if (ui < 0) continue;  // an edge of the piece's boundary
+      const std::vector<Index> cuts = edges.shared_cuts({a, b});
       const Tri u = rm.tris[ui];
       const Index d = edges.far(static_cast<std::size_t>(ui), a, b);
       // the flip to (c, d), unless that is a chord too
       const std::vector<Tri> flip{Tri{c, a, d}, Tri{c, d, b}};
-      const double flip_q = edges.shared_cuts({c, d}).empty() && turn_as(t, u, flip) ? worst(flip) : -1;
+      const double flip_q = !edges.share_a_cut({c, d}) && turn_as(t, u, flip) ? worst(flip) : -1;
       // or a node between the two triangles, off the cut planes, joined to all four corners:
       // tried at the quadrilateral's centre in (u, v) and at each triangle's
       const Index m = static_cast<Index>(rm.uv.size());
