@@ -28,28 +28,21 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 BOUND = 1.15  # the issue's: mesh_shape at most 1.15 times the CLI's time
 
 
-# -- inside freecadcmd: mesh_shape on every job ---------------------------------------------------
+# -- inside freecadcmd: mesh_shape on one job ----------------------------------------------------
 
 def child():
     sys.path.insert(0, os.path.abspath(os.environ["BISECTMESH_BUILD_MOD"]))
     import Part
     import bisectmesh
 
-    jobs = json.loads(os.environ["BENCH_JOBS"])
-    shapes = {}
-    out = []
-    for job in jobs:
-        if job["model"] not in shapes:
-            shape = Part.Shape()
-            shape.read(job["model"])
-            shapes[job["model"]] = shape
-        start = time.perf_counter()
-        mesh = bisectmesh.mesh_shape(shapes[job["model"]], elements=job["count"], order=job["order"])
-        seconds = time.perf_counter() - start
-        out.append(dict(job, seconds=seconds, tets=mesh.VolumeCount, nodes=mesh.NodeCount, groups=len(mesh.Groups)))
-        del mesh
+    job = json.loads(os.environ["BENCH_JOB"])
+    shape = Part.Shape()
+    shape.read(job["model"])
+    start = time.perf_counter()
+    mesh = bisectmesh.mesh_shape(shape, elements=job["count"], order=job["order"])
+    seconds = time.perf_counter() - start
     with open(os.environ["BENCH_OUT"], "w") as f:
-        json.dump(out, f)
+        json.dump(dict(job, seconds=seconds, tets=mesh.VolumeCount, nodes=mesh.NodeCount), f)
 
 
 # -- the driver -----------------------------------------------------------------------------------
@@ -66,16 +59,17 @@ def cli_time(cli, job, work):
     return seconds
 
 
-def shape_times(jobs, env, work):
+def shape_time(job, env, work):
+    """mesh_shape on one job in a FreeCAD of its own: no job runs in another's leftover memory."""
     out = os.path.join(work, "mesh_shape.json")
-    env = dict(env, BENCH_CHILD="1", BENCH_JOBS=json.dumps(jobs), BENCH_OUT=out)
+    env = dict(env, BENCH_CHILD="1", BENCH_JOB=json.dumps(job), BENCH_OUT=out)
     run = subprocess.run(["freecadcmd", os.path.abspath(__file__)], env=env, cwd=work, capture_output=True, text=True)
     if not os.path.exists(out):
         raise SystemExit("freecadcmd ended (exit %d) without results: %s" % (run.returncode, run.stdout[-500:] + run.stderr[-500:]))
     with open(out) as f:
-        results = json.load(f)
+        result = json.load(f)
     os.remove(out)
-    return results
+    return result
 
 
 def write(rows, out_dir):
@@ -107,8 +101,8 @@ def main(shared, out_dir, models):
         for _ in range(repeats):
             for i, job in enumerate(jobs):
                 best_cli[i] = min(best_cli[i], cli_time(cli, job, work))
-            for i, job in enumerate(jobs):  # a FreeCAD per job: no job runs in another's leftover memory
-                r = shape_times([job], env, work)[0]
+            for i, job in enumerate(jobs):
+                r = shape_time(job, env, work)
                 if best_shape[i] is None or r["seconds"] < best_shape[i]["seconds"]:
                     best_shape[i] = r
     rows = []

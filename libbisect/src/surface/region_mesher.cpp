@@ -168,7 +168,7 @@ class Mesher {
     const std::size_t budget = 200 * (nb_ + 16) + 4 * queue.size();
     while (!queue.empty()) {
       if (++tried > 40 * budget) break;  // a safety net, far above any real need
-      if ((tried & 1023u) == 0 && o_.cancelled && o_.cancelled()) throw Cancelled();
+      poll(tried);
       const Index t = queue.front();
       queue.pop_front();
       double h = 0;
@@ -231,9 +231,10 @@ class Mesher {
     return triangle_min_angle(xyz_[T.v[0]], xyz_[T.v[1]], xyz_[T.v[2]]);
   }
 
-  // Stop within a pass too: the eight passes of swaps and smoothing over a large face ran a
-  // second and more between the refinement's polls (tests/cpp/occ/test_brep_bounded_work.cpp: a
-  // cylinder at a chord deviation of 3e-4, Stop at 1 s took effect at 1.8 s)
+  // Stop every 1,024 steps of the refinement and of the passes of swaps and smoothing too: those
+  // passes over a large face ran a second and more between the refinement's polls
+  // (tests/cpp/occ/test_brep_bounded_work.cpp: a cylinder at a chord deviation of 3e-4, Stop at
+  // 1 s took effect at 1.8 s)
   void poll(std::size_t step) const {
     if ((step & 1023u) == 0 && o_.cancelled && o_.cancelled()) throw Cancelled();
   }
