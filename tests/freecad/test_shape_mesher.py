@@ -126,6 +126,36 @@ class ShapeMesherTest(unittest.TestCase):
             shape_mesher.mesh_shape(shape, elements=2000, progress=lambda x: calls.append(x) or x < 1.0)
         self.assertEqual(calls[-1], 1.0)
 
+    def test_build_in_a_thread_and_its_cancel_leave_the_collector_on(self):
+        # the FemMesh build turns Python's cycle collector off while it runs (and, off the main
+        # thread, sleeps a little per slice): a mesh built in a thread is the same mesh, and the
+        # collector is on again after the build, also when Stop ends it half way
+        import gc
+        import threading
+
+        shape = Part.makeBox(10, 10, 10).cut(Part.makeCylinder(3, 10, FreeCAD.Vector(5, 5, 0)))
+        core_share = shape_mesher.progress_shares(2)[0]
+        here = shape_mesher.mesh_shape(shape, elements=3000, order=2)
+        self.assertTrue(gc.isenabled())
+        got = {}
+
+        def work():
+            got["mesh"] = shape_mesher.mesh_shape(shape, elements=3000, order=2)
+            got["gc"] = gc.isenabled()
+
+        thread = threading.Thread(target=work)
+        thread.start()
+        thread.join()
+        self.assertTrue(got["gc"])
+        self.assertEqual((got["mesh"].NodeCount, got["mesh"].VolumeCount), (here.NodeCount, here.VolumeCount))
+        calls = []
+        with self.assertRaises(bisectmesh.core().Cancelled):
+            shape_mesher.mesh_shape(shape, elements=3000, order=2,
+                                    progress=lambda x: calls.append(x) or x < core_share + 0.1)
+        self.assertGreater(calls[-1], core_share + 0.1)  # stopped inside the build
+        self.assertLess(calls[-1], 1.0)
+        self.assertTrue(gc.isenabled())
+
     def test_errors(self):
         with self.assertRaises(ValueError):
             shape_mesher.mesh_shape(Part.makeBox(1, 1, 1), order=1)  # neither elements nor size

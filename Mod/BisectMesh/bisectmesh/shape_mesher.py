@@ -12,7 +12,10 @@ Groups: ``Face<k>_Nodes`` (the nodes on B-rep face k, its edges and vertices inc
 r) for every solid; k and r count from 1, as FreeCAD names sub-shapes.
 """
 
+import gc
 import numbers
+import threading
+import time
 
 import numpy as np
 
@@ -119,7 +122,6 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
     bisectmesh.core().Cancelled when cancelled; RuntimeError when a stage of the generator cannot
     finish.
     """
-    import time
 
     shape = arguments.part_shape_argument(shape)
     elements, size = arguments.count_or_size(elements, size)
@@ -211,7 +213,36 @@ def _slices(array, step):
 def femmesh_from_arrays(out, faces, solids, progress=None):
     """A ``Fem.FemMesh`` of the core's mesh dict (nodes, tets, region, tris, tri_tag) with the
     groups ``Face<k>_Nodes``, ``Face<k>_Faces`` (k = 1..faces) and ``Solid<r>`` (r = 1..solids).
-    ``progress(fraction)`` is called now and then."""
+    ``progress(fraction)`` is called now and then.
+
+    Off the main thread (the mesh panel's worker) the build lets the window's thread in after each
+    slice. Measured in a FreeCAD window at 2e5 tetra10 (tests/freecad/gui_stall.py) the window froze
+    0.2-0.57 s while this ran: the worker gave the GIL up between calls and took it back before
+    the window's thread, waiting on a busy machine, was scheduled (Python's switch interval only
+    helps a waiter that finds the GIL held all along). A 1 ms sleep per slice (5,000 items, 20-50
+    ms of FreeCAD's adding) ends that; it costs ~0.1 s of a 2 s build, and nothing on the main
+    thread, where no window waits. Python's cycle collector is off meanwhile: each slice's row
+    lists live long enough to be promoted, and the full collections that followed (20-35 ms each,
+    one every 0.1 s, GIL held) walked all of FreeCAD's objects to find nothing (rows hold no
+    cycles)."""
+    pause = 0.001 if threading.current_thread() is not threading.main_thread() else 0.0
+
+    def tick(fraction):
+        if pause:
+            time.sleep(pause)
+        if progress is not None:
+            progress(fraction)
+
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        return _femmesh_from_arrays(out, faces, solids, tick)
+    finally:
+        if was_enabled:
+            gc.enable()
+
+
+def _femmesh_from_arrays(out, faces, solids, tick):
     import Fem
 
     nodes, tets, tris = np.asarray(out["nodes"], float), np.asarray(out["tets"]), np.asarray(out["tris"])
@@ -232,24 +263,20 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
             for i, row in enumerate(rows, first_id + start):
                 add(row, i)
             done += len(rows)
-            if progress is not None:
-                progress(done / total)
+            tick(done / total)
     for k in range(faces):
         mine = np.nonzero(tri_tag == k)[0]
         for kind, ids in (("Nodes", np.unique(tris[mine]) + 1), ("Faces", mine + first)):
             g = mesh.addGroup("Face%d_%s" % (k + 1, kind), kind[:-1])
             for _, part in _slices(ids, step):  # FreeCAD's adding to a group: 1.2 s for 10^6 tetra10's faces
                 mesh.addGroupElements(g, part)
-                if progress is not None:
-                    progress((done + k) / total)
+                tick((done + k) / total)
     for r in range(solids):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
         ids = np.nonzero(region == r)[0] + 1
         # in slices, each one call into FreeCAD: 2e5 ids in one call took 0.5 s without a progress call
         for start, part in _slices(ids, step):
             mesh.addGroupElements(g, part)
-            if progress is not None:
-                progress((done + faces + r + start / len(ids)) / total)
-    if progress is not None:
-        progress(1.0)
+            tick((done + faces + r + start / len(ids)) / total)
+    tick(1.0)
     return mesh
