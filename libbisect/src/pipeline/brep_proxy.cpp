@@ -141,13 +141,22 @@ void unfold_degenerate(const std::vector<Vec3>& X, BrepTessellation::Face& f) {
   const auto repeated = [](const std::array<Index, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; };
   std::size_t left = 0;
   for (const auto& t : f.tris) left += !repeated(t) && flat(t);
-  for (std::size_t pass = 0; left > 0 && pass < 4 * f.tris.size(); ++pass) {
-    std::map<std::pair<Index, Index>, std::pair<std::size_t, int>> edge;  // (a, b) directed -> (tri, corner opposite)
-    for (std::size_t t = 0; t < f.tris.size(); ++t)
-      for (int k = 0; k < 3; ++k) edge[{f.tris[t][(k + 1) % 3], f.tris[t][(k + 2) % 3]}] = {t, k};
+  if (left == 0) return;
+  std::map<std::pair<Index, Index>, std::pair<std::size_t, int>> edge;  // (a, b) directed -> (tri, corner opposite)
+  const auto index = [&](std::size_t t, bool on) {  // a triangle's sides into the map, or out
+    for (int k = 0; k < 3; ++k) {
+      const std::pair<Index, Index> side{f.tris[t][(k + 1) % 3], f.tris[t][(k + 2) % 3]};
+      if (on) edge[side] = {t, k};
+      else edge.erase(side);
+    }
+  };
+  for (std::size_t t = 0; t < f.tris.size(); ++t) index(t, true);
+  // each pass flips what it can; a fan's flips run one triangle further per pass at worst
+  const std::size_t passes = left + 1;
+  for (std::size_t pass = 0; left > 0 && pass < passes; ++pass) {
     std::size_t flips = 0;
     for (std::size_t t = 0; t < f.tris.size(); ++t) {
-      const auto& tri = f.tris[t];
+      const auto tri = f.tris[t];
       if (repeated(tri) || !flat(tri)) continue;
       int k = 0;  // the corner opposite the longest side
       for (int j = 1; j < 3; ++j)
@@ -157,17 +166,21 @@ void unfold_degenerate(const std::vector<Vec3>& X, BrepTessellation::Face& f) {
       if (other == edge.end()) continue;
       const auto [n, j] = other->second;
       const Index d = f.tris[n][j];
-      if (d == c) continue;
+      // (a pole's triangles with a repeated node share sides with their neighbours in the map)
+      if (n == t || d == c || f.tris[n][(j + 1) % 3] != b || f.tris[n][(j + 2) % 3] != a) continue;
       const Vec2 ua = f.uv[t][(k + 1) % 3], ub = f.uv[t][(k + 2) % 3], uc = f.uv[t][k], ud = f.uv[n][j];
       // the shared side in the same chart on both sides (not a seam)
       if ((f.uv[n][(j + 2) % 3] - ua).norm() > 1e-12 * (1 + ua.norm()) || (f.uv[n][(j + 1) % 3] - ub).norm() > 1e-12 * (1 + ub.norm())) continue;
       const auto ccw = [](const Vec2& p, const Vec2& q, const Vec2& r) { return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x() > 0; };
       const std::array<Index, 3> A{c, a, d}, B{d, b, c};
       if (!ccw(uc, ua, ud) || !ccw(ud, ub, uc) || repeated(A) || repeated(B) || flat(A) || flat(B)) continue;
+      const bool both = flat(f.tris[n]);
+      index(t, false), index(n, false);
       f.tris[t] = A, f.uv[t] = {uc, ua, ud};
       f.tris[n] = B, f.uv[n] = {ud, ub, uc};
-      ++flips, --left;
-      break;  // the sides changed: the map again
+      index(t, true), index(n, true);
+      ++flips;
+      left -= both ? std::min<std::size_t>(left, 2) : 1;
     }
     if (flips == 0) break;
   }
