@@ -63,14 +63,6 @@ Vec3 onto_planes(const Vec3& p, const std::vector<std::array<double, 4>>& planes
   return p - N.transpose() * y;
 }
 
-// A triangle with no area in space (its height under 1e-6 of its longest side), whatever its area
-// in (u, v): three nodes on one generatrix of a cone, say.
-bool has_no_area(const std::vector<Vec3>& X, const std::array<Index, 3>& t) {
-  const Vec3 a = X[t[0]], b = X[t[1]], c = X[t[2]];
-  const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-  return (b - a).cross(c - a).norm() <= 1e-6 * longest;
-}
-
 // The distance from the triangle's centroid to the surface (from the triangle's mean parameters).
 double deviation(const ParametricSurface& s, const std::vector<Vec3>& X, const std::array<Index, 3>& t, const std::array<Vec2, 3>& uv) {
   const Vec3 c = (X[t[0]] + X[t[1]] + X[t[2]]) / 3;
@@ -104,9 +96,7 @@ void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, Brep
       if (!ccw(uc, ua, ud) || !ccw(ud, ub, uc)) continue;
       const std::array<Index, 3> A{c, a, d}, B{d, b, c};
       const std::array<Vec2, 3> uA{uc, ua, ud}, uB{ud, ub, uc};
-      // never to a triangle with no area: one along a cone's generatrix lies on the surface (no
-      // deviation at all) and would win every time
-      if (has_no_area(X, A) || has_no_area(X, B)) continue;
+      if ((X[d] - X[c]).cross(X[a] - X[c]).norm() <= 0 || (X[b] - X[d]).cross(X[c] - X[d]).norm() <= 0) continue;
       // the new triangles face the way the surface does (within 60 degrees), so a flip never
       // folds the facets over each other
       auto faces_up = [&](const std::array<Index, 3>& tri, const std::array<Vec2, 3>& uv) {
@@ -129,63 +119,6 @@ void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, Brep
   }
 }
 
-// Triangles with no area in space: BRepMesh meshes a face in (u, v), where a pole (a cone's
-// apex at v = 0, the degenerate edge's one node) is the point (0, 0). A fan from there to the
-// nodes of one generatrix has area in (u, v) and none in space: its corners lie on the line
-// through the apex (corpus/Block.brep, Face478, a half cone whose apex fan crossed its
-// neighbours at every deflection). Each such triangle gives its longest side to its neighbour
-// (a flip, where both new triangles have area and keep their (u, v) orientation): down a fan
-// the flips run from the real triangle at its end to the apex.
-void unfold_degenerate(const std::vector<Vec3>& X, BrepTessellation::Face& f) {
-  const auto flat = [&X](const std::array<Index, 3>& t) { return has_no_area(X, t); };
-  const auto repeated = [](const std::array<Index, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; };
-  std::size_t left = 0;
-  for (const auto& t : f.tris) left += !repeated(t) && flat(t);
-  if (left == 0) return;
-  std::map<std::pair<Index, Index>, std::pair<std::size_t, int>> edge;  // (a, b) directed -> (tri, corner opposite)
-  const auto index = [&](std::size_t t, bool on) {  // a triangle's sides into the map, or out
-    for (int k = 0; k < 3; ++k) {
-      const std::pair<Index, Index> side{f.tris[t][(k + 1) % 3], f.tris[t][(k + 2) % 3]};
-      if (on) edge[side] = {t, k};
-      else edge.erase(side);
-    }
-  };
-  for (std::size_t t = 0; t < f.tris.size(); ++t) index(t, true);
-  // each pass flips what it can; a fan's flips run one triangle further per pass at worst
-  const std::size_t passes = left + 1;
-  for (std::size_t pass = 0; left > 0 && pass < passes; ++pass) {
-    std::size_t flips = 0;
-    for (std::size_t t = 0; t < f.tris.size(); ++t) {
-      const auto tri = f.tris[t];
-      if (repeated(tri) || !flat(tri)) continue;
-      int k = 0;  // the corner opposite the longest side
-      for (int j = 1; j < 3; ++j)
-        if ((X[tri[(j + 1) % 3]] - X[tri[(j + 2) % 3]]).squaredNorm() > (X[tri[(k + 1) % 3]] - X[tri[(k + 2) % 3]]).squaredNorm()) k = j;
-      const Index a = tri[(k + 1) % 3], b = tri[(k + 2) % 3], c = tri[k];
-      const auto other = edge.find({b, a});
-      if (other == edge.end()) continue;
-      const auto [n, j] = other->second;
-      const Index d = f.tris[n][j];
-      // (a pole's triangles with a repeated node share sides with their neighbours in the map)
-      if (n == t || d == c || f.tris[n][(j + 1) % 3] != b || f.tris[n][(j + 2) % 3] != a) continue;
-      const Vec2 ua = f.uv[t][(k + 1) % 3], ub = f.uv[t][(k + 2) % 3], uc = f.uv[t][k], ud = f.uv[n][j];
-      // the shared side in the same chart on both sides (not a seam)
-      if ((f.uv[n][(j + 2) % 3] - ua).norm() > 1e-12 * (1 + ua.norm()) || (f.uv[n][(j + 1) % 3] - ub).norm() > 1e-12 * (1 + ub.norm())) continue;
-      const auto ccw = [](const Vec2& p, const Vec2& q, const Vec2& r) { return (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x() > 0; };
-      const std::array<Index, 3> A{c, a, d}, B{d, b, c};
-      if (!ccw(uc, ua, ud) || !ccw(ud, ub, uc) || repeated(A) || repeated(B) || flat(A) || flat(B)) continue;
-      const bool both = flat(f.tris[n]);
-      index(t, false), index(n, false);
-      f.tris[t] = A, f.uv[t] = {uc, ua, ud};
-      f.tris[n] = B, f.uv[n] = {ud, ub, uc};
-      index(t, true), index(n, true);
-      ++flips;
-      left -= both ? std::min<std::size_t>(left, 2) : 1;
-    }
-    if (flips == 0) break;
-  }
-}
-
 }  // namespace
 
 BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
@@ -193,10 +126,7 @@ BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
   px.linear = linear, px.angular = angular;
   px.tess = in.tessellate(linear, angular);
   for (std::size_t f = 0; f < in.faces.size() && f < px.tess.faces.size(); ++f)
-    if (!in.faces[f].planar) {
-      unfold_degenerate(px.tess.nodes, px.tess.faces[f]);
-      follow_surface(*in.faces[f].surface, px.tess.nodes, px.tess.faces[f]);
-    }
+    if (!in.faces[f].planar) follow_surface(*in.faces[f].surface, px.tess.nodes, px.tess.faces[f]);
   const BrepTessellation& t = px.tess;
   if (t.faces.size() != in.faces.size() || t.edges.size() != in.edges.size())
     throw MeshingError(in.source + ": the tessellation does not match the shape's faces and edges");

@@ -27,6 +27,8 @@ namespace {
 const std::map<std::string, std::string> kNotYet = {
     // an open shell: the cube's planar faces are missing (named, and nothing to mesh)
     {"cube_filet.brep", "edges bound one face only, where the shell is open (Edge"},
+    // the proxy's coarse facets cross at every proxy tried, named by their B-rep face
+    {"Block.brep", "degrees (" + std::string(BISECT_SHARED_DIR) + "/models/corpus/Block.brep: Face478's tessellation folds: two of its facets intersect at ("},
     // a fold that the optimisation and its refill leave on every proxy, caught before the
     // assembly at both orders (the first proxy's message is raised; Cone_1, flat at its apex on
     // the first proxy, meshes on the second since a failure past the fill tries the next proxy:
@@ -36,14 +38,6 @@ const std::map<std::string, std::string> kNotYet = {
     {"x_problemSphere.brep", "came out inside out"},
     // a cell no fill takes: the true surface bulges past the cell's other faces
     {"wrenchnut.brep", "no point sees its whole boundary"},
-};
-
-// Shapes still running at a deadline (seconds): cancelled there. Block's proxy is no longer
-// refused (its half cones' apex fans, flat in space, crossed their neighbours: brep_proxy.cpp), but
-// its decomposition cuts 6,097 facets with 3,932 reflex edges one small cell at a time (1,500
-// cells after 85 s, the largest still 4,290 facets); at 2e4 elements it ran past 15 minutes.
-const std::map<std::string, double> kPastDeadline = {
-    {"Block.brep", 20.0},
 };
 
 std::vector<std::string> corpus() {
@@ -67,17 +61,9 @@ TEST_P(Corpus, MeshesOrIsRefusedNamingTheFace) {
   opt.order = 2;
   GenerateStats st;
   const auto start = std::chrono::steady_clock::now();
-  const auto slow = kPastDeadline.find(file);
-  if (slow != kPastDeadline.end()) {
-    const double deadline = slow->second;
-    opt.progress = [start, deadline](double) {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < deadline;
-    };
-  }
   try {
     const TetMesh m = generate_brep_mesh(load_brep_file(path), opt, &st);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ASSERT_TRUE(slow == kPastDeadline.end()) << file << " ends within " << slow->second << " s now: take it off kPastDeadline";
     ASSERT_TRUE(known == kNotYet.end()) << file << " meshes now: take it off kNotYet (and the README's list)";
     const std::vector<Violation> bad = validate(m);
     ASSERT_TRUE(bad.empty()) << file << ": " << bad.size() << " violations, first: " << to_string(bad.front().kind);
@@ -88,12 +74,10 @@ TEST_P(Corpus, MeshesOrIsRefusedNamingTheFace) {
     std::printf("[ corpus   ] %-34s %7zu tets (floor: %s), min dihedral %5.2f, mean alpha %.3f, %.1f s\n", file.c_str(), m.num_tets(),
                 st.count_floor_reason.empty() ? "none" : st.count_floor_reason.c_str(), q.dihedral_min.min, q.alpha.mean, seconds);
   } catch (const Cancelled&) {
-    if (slow == kPastDeadline.end()) throw;
-    std::printf("[ corpus   ] %-34s still running after %.0f s: cancelled\n", file.c_str(), slow->second);
+    throw;
   } catch (const Error& e) {
     const std::string what = e.what();
     std::printf("[ corpus   ] %-34s refused: %.200s\n", file.c_str(), what.c_str());
-    ASSERT_TRUE(slow == kPastDeadline.end()) << file << " ends within " << slow->second << " s now: take it off kPastDeadline (" << what << ")";
     ASSERT_TRUE(known != kNotYet.end()) << file << " no longer meshes: " << what;
     EXPECT_NE(what.find(known->second), std::string::npos) << file << " fails another way: " << what;
     EXPECT_EQ(what.rfind(path, 0), 0u) << "the message starts with the file: " << what;
