@@ -180,8 +180,11 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
       if (attempt >= 3) {
         char degrees[32];
         std::snprintf(degrees, sizeof degrees, "%.3g", angle * 180 / M_PI);
+        // either the shape's faces meet there, or BRepMesh folds where the shape is sound (a half
+        // cone's apex fan, flat in space, on corpus/Block.brep): the message says both
         throw InputError(in.source + ": the shape's tessellation is not a valid solid even at an angular deflection of " + degrees +
-                         " degrees (" + e.what() + ")");
+                         " degrees (" + e.what() + "); either the shape's faces meet there, or OpenCASCADE's tessellation folds where " +
+                         "the shape is sound (it does at a cone's apex)");
       }
       angle *= 0.5, linear *= 0.5;
     }
