@@ -45,7 +45,7 @@ class MeshPanel(MeshForm):
         self.error = None
         self.closed = False
         self._accept_when_done = False
-        self._shown_fraction = None  # the latest progress report, not yet on the bar
+        self._pending_fraction = None  # the latest progress report, not yet on the bar
         self._bar_timer = QtCore.QTimer()
         self._bar_timer.setSingleShot(True)
         self._bar_timer.setInterval(BAR_PERIOD_MS)
@@ -129,12 +129,12 @@ class MeshPanel(MeshForm):
         """A progress report: on the bar now if the bar has rested BAR_PERIOD_MS, else when it has."""
         if self.closed:
             return
-        self._shown_fraction = fraction
+        self._pending_fraction = fraction
         if not self._bar_timer.isActive():
             self._show_progress()
 
     def _show_progress(self):
-        fraction, self._shown_fraction = self._shown_fraction, None
+        fraction, self._pending_fraction = self._pending_fraction, None
         if fraction is None or self.closed or self.worker is None:
             return
         self.progress.setValue(int(round(100 * min(max(fraction, 0.0), 1.0))))
@@ -146,7 +146,7 @@ class MeshPanel(MeshForm):
             return
         self.worker = None
         self._bar_timer.stop()
-        self._shown_fraction = None
+        self._pending_fraction = None
         if self.closed:
             return
         self._set_running(False)
