@@ -51,7 +51,12 @@ bool chebyshev_centre(const std::vector<Vec3>& X, const std::vector<tet::Tet>& t
           Eigen::Matrix4d A;
           Eigen::Vector4d r;
           const std::size_t pick[4] = {a, b, c, d};
-          for (int j = 0; j < 4; ++j) A.row(j) << u[pick[j]].x(), u[pick[j]].y(), u[pick[j]].z(), -1.0, r(j) = e[pick[j]];
+          // (r(j) apart: inside the comma initializer it was a fifth value, written past the row
+          // into A(0, 1), which the sanitizer build's Eigen assertion caught)
+          for (int j = 0; j < 4; ++j) {
+            A.row(j) << u[pick[j]].x(), u[pick[j]].y(), u[pick[j]].z(), -1.0;
+            r(j) = e[pick[j]];
+          }
           // the closed-form 4x4 inverse: these solves are most of an untangling's time (a star of
           // 40 planes has 91,390 fours; FullPivLU took 12% of corpus/x_ring.brep's meshing)
           Eigen::Matrix4d inv;
