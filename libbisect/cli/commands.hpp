@@ -35,6 +35,7 @@ struct MeshOptions {
   int optimize_passes = 3;    // --optimize PASSES: global min-max transformation passes
   int smooth_passes = 3;      // --smooth PASSES: Laplace smoothing passes
   int sliver_rounds = 8;      // --slivers ROUNDS: sliver repair rounds
+  int mean_rounds = 2;        // --mean-shape ROUNDS: rounds for the mean shape after the repair
   bool delaunay_insertion = true;   // --insertion delaunay|minmax
   int threads = 0;            // --threads N (0: one per core)
   int order = 1;              // --order 1|2

@@ -52,6 +52,8 @@ const char* kUsage =
     "  --optimize N    passes of min-max local transformations over the whole mesh (default 3)\n"
     "  --smooth N      passes of Laplace smoothing of interior nodes (default 3)\n"
     "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 8)\n"
+    "  --mean-shape N  rounds of transformations and node moves for the mean alpha after\n"
+    "                  those, keeping every smallest angle (default 2)\n"
     "  --threads N     threads for the face grids and the cell fillings (default 0: one per\n"
     "                  core); the mesh is the same for every N\n"
     "  --grading G     interior spacing grows from a short boundary edge's by G per unit of\n"
@@ -166,12 +168,15 @@ int main(int argc, char** argv) {
       std::string v;
       if (!value(&v) || (v != "minmax" && v != "delaunay")) return usage_error(a + " needs minmax or delaunay");
       mesh.delaunay_insertion = v == "delaunay";
-    } else if (a == "--optimize" || a == "--smooth" || a == "--slivers") {
+    } else if (a == "--optimize" || a == "--smooth" || a == "--slivers" || a == "--mean-shape") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number of passes");
       const auto n = parse_whole(a, v, 0, 100, "a number of passes", &bad);
       if (!n) return usage_error(bad);
-      (a == "--optimize" ? mesh.optimize_passes : a == "--smooth" ? mesh.smooth_passes : mesh.sliver_rounds) = static_cast<int>(*n);
+      (a == "--optimize"  ? mesh.optimize_passes
+       : a == "--smooth"  ? mesh.smooth_passes
+       : a == "--slivers" ? mesh.sliver_rounds
+                          : mesh.mean_rounds) = static_cast<int>(*n);
     } else if (a == "--grading") {
       std::string v;
       if (!value(&v)) return usage_error(a + " needs a number");

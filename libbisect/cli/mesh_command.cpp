@@ -98,6 +98,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.optimize.passes = opt.optimize_passes;
     go.optimize.smooth_passes = opt.smooth_passes;
     go.optimize.sliver_rounds = opt.sliver_rounds;
+    go.optimize.mean_rounds = opt.mean_rounds;
     go.delaunay_insertion = opt.delaunay_insertion;
     go.threads = opt.threads;
     go.order = opt.order;

@@ -82,6 +82,7 @@ py::dict default_options() {
   d["optimize"] = o.optimize.passes;
   d["smooth"] = o.optimize.smooth_passes;
   d["slivers"] = o.optimize.sliver_rounds;
+  d["mean_shape"] = o.optimize.mean_rounds;
   d["grading"] = o.sizing.grading;
   d["boundary_flips"] = o.optimize.boundary_flips;
   d["threads"] = o.threads;
@@ -110,6 +111,7 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "optimize") o.optimize.passes = static_cast<int>(integer(value, "optimize", 0, 100));
     else if (k == "smooth") o.optimize.smooth_passes = static_cast<int>(integer(value, "smooth", 0, 100));
     else if (k == "slivers") o.optimize.sliver_rounds = static_cast<int>(integer(value, "slivers", 0, 100));
+    else if (k == "mean_shape") o.optimize.mean_rounds = static_cast<int>(integer(value, "mean_shape", 0, 100));
     else if (k == "grading") o.sizing.grading = number(value, "grading");
     else if (k == "boundary_flips") o.optimize.boundary_flips = flag(value, "boundary_flips");
     else if (k == "threads") o.threads = static_cast<int>(integer(value, "threads", 0, 1024));

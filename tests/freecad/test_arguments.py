@@ -116,7 +116,7 @@ class MeshShapeArgumentsTest(unittest.TestCase, RefusalTable):
             rows += number_rows(name, positive_only=False)
         rows += [("max_size", 1e-9, ValueError), ("chord_deviation", 1e-12, ValueError),
                  ("curvature_elements", 2, ValueError)]
-        for name in ("optimize", "smooth", "slivers"):
+        for name in ("optimize", "smooth", "slivers", "mean_shape"):
             rows += [(name, -1, ValueError), (name, 10 ** 6, ValueError),
                      (name, 1.5, TypeError), (name, NAN, TypeError), (name, "3", TypeError)]
         rows += [("size_grading", v, ValueError) for v in (0, -1, NAN, INF)]

@@ -54,6 +54,9 @@ struct OptimizeOptions {
   int passes = 3;         // global min-max transformation passes (7.5)
   int smooth_passes = 3;  // Laplace smoothing passes over interior nodes, one after each of those
   int sliver_rounds = 8;  // rounds of node moves on tetrahedra with a dihedral angle under 10 degrees
+  // rounds of transformations and node moves for the mean α̂ after the sliver repair, from the
+  // tetrahedra under α̂ 0.18, keeping every smallest angle (optimize/mean_shape.hpp)
+  int mean_rounds = 2;
   // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
   // the face grids are already optimised and on the ../shared models it removed no more
   // slivers than it made
@@ -92,6 +95,7 @@ struct GenerateStats {
   std::int64_t skipped_nodes = 0;     // interior nodes that fell on a face or node (not inserted)
   std::int64_t flips = 0;             // local transformations applied, all stages
   std::int64_t sliver_moves = 0;      // node moves of the sliver repair
+  std::int64_t mean_changes = 0;      // transformations and node moves of the mean-shape passes
   std::int64_t fillings = 0;          // times the cells were filled while the count was sought
   std::int64_t graded_nodes = 0;      // interior nodes placed by the grading from fine boundary spacing
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the

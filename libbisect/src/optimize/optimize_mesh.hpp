@@ -1,7 +1,8 @@
 // The global improvement once the cells are filled (thesis 6.9.2): passes of the local min-max
 // transformations of 7.5 (only the constrained faces hold: input faces and interfaces; the cut
 // faces are gone) in turn with Laplace smoothing, each opening moves for the other; then the
-// repair of the slivers they leave. The first pass covers the whole mesh, the rest work lists.
+// repair of the slivers they leave, and passes for the mean shape (mean_shape.hpp). The first
+// pass covers the whole mesh, the rest work lists.
 #pragma once
 #include <functional>
 #include <cstdint>
@@ -18,6 +19,7 @@ inline constexpr double kSliverBelowDeg = 10;
 struct OptimizeCounts {
   std::int64_t flips = 0;         // transformations applied
   std::int64_t sliver_moves = 0;  // node moves and insertions of the sliver repair
+  std::int64_t mean_changes = 0;  // transformations and node moves of the mean-shape passes
   std::int64_t refilled_folds = 0;  // inverted tetrahedra's neighbourhoods filled again (inverted_refill.hpp)
   std::int64_t folds_left = 0;      // tetrahedra still inside out after the refill (no sliver repair then): refuse the mesh
 };

@@ -4,7 +4,9 @@
 // neighbours' mean, whichever gives the tetrahedra around that node the largest smallest
 // dihedral angle; one whose four nodes are all fixed gets a new free node half an edge inside
 // it (a Delaunay insertion), which the next round moves; the transformations run again
-// around every change.
+// around every change. After the rounds, a tetrahedron still under the bound with two free
+// nodes has their edge collapsed (one node kept, where it was or at the edge's middle) when
+// that raises the worst dihedral angle of the two nodes' stars.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -18,7 +20,7 @@ namespace bisect::optimize {
 // below sliver_key(below_deg) (every such tetrahedron's is: a list that holds all tetrahedra
 // under that key misses none); each later round looks only at what the last one changed and at
 // the tetrahedra it could not improve. cx must work on X and hold every tetrahedron's current
-// key. Returns the moves and insertions made.
+// key. Returns the moves, insertions and collapses made.
 std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds,
                            std::vector<Index> start);
 

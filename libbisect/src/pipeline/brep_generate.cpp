@@ -223,6 +223,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best->X, best->on_boundary, opt.optimize, optimize_progress);
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;
+  st->mean_changes = oc.mean_changes;
   st->refilled_folds = oc.refilled_folds;
   st->optimize = since(t_opt);
   // the place, and the B-rep faces beside it (what a user can find in FreeCAD)

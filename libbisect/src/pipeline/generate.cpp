@@ -114,6 +114,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize, optimize_progress);
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
+  st.mean_changes = oc.mean_changes;
   st.refilled_folds = oc.refilled_folds;
   Vec3 fold;
   Index fold_region = 0;
@@ -133,7 +134,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
   std::ostringstream o;
   o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
-    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves
+    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells

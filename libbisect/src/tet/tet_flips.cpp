@@ -22,16 +22,6 @@ namespace {
 // poorer old one's angle when that was below.
 constexpr double kMinBoundaryAngle = 0.3490658503988659;
 
-// The angle at p of the triangle p, u, v (radians).
-double corner_angle(const Vec3& p, const Vec3& u, const Vec3& v) { return std::atan2((u - p).cross(v - p).norm(), (u - p).dot(v - p)); }
-
-// The smallest angle of a triangle in 3D, radians: the one facing the shortest side.
-double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm(), ab = (b - a).squaredNorm();
-  if (bc <= ca && bc <= ab) return corner_angle(a, b, c);
-  return ca <= ab ? corner_angle(b, c, a) : corner_angle(c, a, b);
-}
-
 }  // namespace
 
 bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue) {

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "optimize/bipyramid.hpp"
+#include "optimize/grid_cube.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "tet/cell_fill.hpp"
@@ -54,6 +56,45 @@ TEST(SliverRepair, SliverRepairMovesTheFreeNodeAndKeepsFixedOnes) {
   untouched.build(fill_convex_cell(q.X, q.boundary, {5}, Vec3(0, 0, 0)));
   EXPECT_EQ(repair_slivers(untouched, q.X, q.fixed, 10, 0, all_below_key(untouched, sliver_key(10))), 0u);
   EXPECT_EQ(q.X[5], Bipyramid().X[5]);
+}
+
+TEST(SliverRepair, TwoFreeNodesTooCloseBecomeOne) {
+  // a jittered grid with one more free node 0.01 from an inner one: the tetrahedra between the
+  // two are slivers that no move of either removes for good; with no rounds of moves, the
+  // repair's last stage collapses their edge
+  GridCube g(4, 0.02, 5);
+  const Vec3 twin = g.X[8 + 21] + Vec3(0.006, 0.005, 0.006);
+  g.X.push_back(twin);
+  g.fixed.push_back(0);
+  std::vector<Index> inside;
+  for (std::size_t v = 8; v < g.X.size(); ++v) inside.push_back(static_cast<Index>(v));
+  const std::vector<std::array<Index, 3>> boundary{{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                                   {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  const std::vector<Tet> tets = fill_convex_cell(g.X, boundary, inside, Vec3(0.5, 0.5, 0.5), true);
+  TetComplex cx(g.X);
+  cx.build(tets);
+  const auto used = [&] {
+    std::set<Index> nodes;
+    for (std::size_t t = 0; t < cx.tet.size(); ++t)
+      if (cx.alive[t]) nodes.insert(cx.tet[t].begin(), cx.tet[t].end());
+    return nodes;
+  };
+  const std::size_t nodes_before = used().size();
+  const double before = worst_cos(g.X, cx.tets());
+  ASSERT_GT(before, std::cos(10 * 3.14159265358979323846 / 180));  // the pair makes a sliver
+  std::vector<Index> all;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) all.push_back(static_cast<Index>(t));
+  const std::vector<Vec3> start = g.X;
+  EXPECT_GT(repair_slivers(cx, g.X, g.fixed, 10, 0, all), 0u);
+  const std::set<Index> after_nodes = used();
+  EXPECT_LT(after_nodes.size(), nodes_before);
+  EXPECT_TRUE(after_nodes.count(8 + 21) == 0 || after_nodes.count(static_cast<Index>(g.X.size() - 1)) == 0);
+  EXPECT_LT(worst_cos(g.X, cx.tets()), before);
+  for (const Tet& t : cx.tets()) EXPECT_TRUE(positive(g.X, t));
+  for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(g.X[v], start[v]) << v;
+  // the keys the complex keeps are the tetrahedra's own
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t]) EXPECT_DOUBLE_EQ(cx.q[t], tet::tet_angle_key(g.X, cx.tet[t]));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "optimize/grid_cube.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "tet/cell_fill.hpp"
@@ -18,31 +19,6 @@ using tet::Tet;
 using tet::TetComplex;
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The unit cube (corners fixed) around a jittered 6 x 6 x 6 grid of free nodes, Delaunay
-// filled: the grid's nearly co-spherical node sets leave slivers.
-struct GridCube {
-  std::vector<Vec3> X;
-  std::vector<char> fixed;
-  std::vector<Tet> tets;
-  GridCube() {
-    for (int i = 0; i < 8; ++i) X.push_back(Vec3(i & 1, i >> 1 & 1, i >> 2 & 1));
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
-    std::vector<Index> inside;
-    for (int i = 1; i <= 6; ++i)
-      for (int j = 1; j <= 6; ++j)
-        for (int k = 1; k <= 6; ++k) {
-          inside.push_back(static_cast<Index>(X.size()));
-          X.push_back(Vec3(i / 7.0 + jitter(rng), j / 7.0 + jitter(rng), k / 7.0 + jitter(rng)));
-        }
-    fixed.assign(X.size(), 0);
-    std::fill(fixed.begin(), fixed.begin() + 8, 1);
-    const std::vector<std::array<Index, 3>> boundary{{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                                                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-    tets = tet::fill_convex_cell(X, boundary, inside, Vec3(0.5, 0.5, 0.5), true);
-  }
-};
 
 double worst_cos(const std::vector<Vec3>& X, const Tet& t) { return worst_dihedral_cos(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
 

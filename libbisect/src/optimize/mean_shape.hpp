@@ -1,0 +1,32 @@
+// The mean shape after the min-max passes. Those stop once the worst tetrahedron around every
+// face, edge and node can rise no more, and leave the others as they came; at coarse counts most
+// tetrahedra touch the boundary, whose nodes never move, and the mean α̂ (inradius /
+// circumradius, thesis 8.3.1) stays at what the fill gave. These passes raise it without
+// giving up what the min-max passes and the sliver repair won: no change lowers the smallest key
+// (tet_angle_key) of the tetrahedra it touches, nor makes a dihedral angle under 10.5 degrees.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "tet/tet_complex.hpp"
+
+namespace bisect::optimize {
+
+struct MeanCounts {
+  std::int64_t flips = 0;  // 2-3 and 3-2 transformations
+  std::int64_t moves = 0;  // node moves
+};
+
+// Up to `rounds` rounds, each from the tetrahedra whose α̂ is under 0.18 (its start): a pass of
+// transformations across their interior faces (2-3) and round their interior edges in three
+// tetrahedra (3-2), then a pass of node moves over their free nodes; a round that changes
+// nothing ends the work. A transformation is made when the mesh's mean
+// α̂ rises by it (the new tetrahedra's α̂ summed, less the old ones', above the running mean
+// times the change in count) and the smallest key of the tetrahedra involved does not fall. A
+// free node moves up the gradient of its star's summed α̂ when every tetrahedron around it stays
+// positive and their smallest key does not fall. Tetrahedra and nodes in the order of their
+// ids, on one thread: the output is the same for the same input.
+// fixed[v]: node v never moves; nodes past its end (inserted by the sliver repair) are free.
+MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds);
+
+}  // namespace bisect::optimize
