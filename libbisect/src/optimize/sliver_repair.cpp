@@ -38,8 +38,9 @@ double mean_edge(const std::vector<Vec3>& X, const Tet& u) {
 // A stuck tetrahedron with two free nodes close together (two interior nodes placed too near
 // each other, opposite a short boundary edge: lug's worst at 10^5, 8.5 degrees, had a free edge
 // of 0.044 beside edges of 0.15; plate-hole's, 4.0 degrees, 1.0 beside 2.5) loses one of them:
-// the free edge collapses, one end kept where it is or moved to the edge's middle, the other's
-// tetrahedra given the kept one in its place and those with both gone. Every way is graded
+// the free edge collapses, one end kept where it is or moved to the edge's middle or to the mean
+// of the merged star's other nodes (plate-hole's needed the mean), the other's tetrahedra given
+// the kept one in its place and those with both gone. Every way is graded
 // before anything changes; the best is made when its worst dihedral angle beats the worst of
 // the two nodes' stars. Returns the tetrahedra made (none when no way is better).
 std::vector<Index> collapse_free_edge(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, Index t) {
@@ -71,7 +72,14 @@ std::vector<Index> collapse_free_edge(tet::TetComplex& cx, std::vector<Vec3>& X,
           fresh.push_back(m);
         }
         const Vec3 old = X[keep];
-        for (const Vec3& p : {old, Vec3(0.5 * (X[v] + X[w]))}) {
+        // where it is, the edge's middle, and the mean of the merged star's other nodes
+        Vec3 mean = Vec3::Zero();
+        int count = 0;
+        for (const Tet& m : fresh)
+          for (Index x : m)
+            if (x != keep) mean += X[x], ++count;
+        if (count > 0) mean /= count;
+        for (const Vec3& p : {old, Vec3(0.5 * (X[v] + X[w])), mean}) {
           X[keep] = p;
           double worst = -1;
           for (const Tet& m : fresh) worst = std::max(worst, worst_dihedral_cos(X[m[0]], X[m[1]], X[m[2]], X[m[3]]));

@@ -5,8 +5,9 @@
 // dihedral angle; one whose four nodes are all fixed gets a new free node half an edge inside
 // it (a Delaunay insertion), which the next round moves; the transformations run again
 // around every change. After the rounds, a tetrahedron still under the bound with two free
-// nodes has their edge collapsed (one node kept, where it was or at the edge's middle) when
-// that raises the worst dihedral angle of the two nodes' stars.
+// nodes has their edge collapsed (one node kept, where it was, at the edge's middle or at the
+// mean of the merged star's nodes) when that raises the worst dihedral angle of the two nodes'
+// stars.
 #pragma once
 #include <cstdint>
 #include <vector>
