@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "geom/predicates.hpp"
 #include "optimize/node_stars.hpp"
@@ -33,6 +34,25 @@ double mean_edge(const std::vector<Vec3>& X, const Tet& u) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) edge += (X[u[i]] - X[u[j]]).norm() / 6;
   return edge;
+}
+
+// Whether the tetrahedra `fresh` have the same outside faces as `region`'s (ids into tets) and
+// meet each other in pairs across every other face.
+bool same_outside(const std::vector<Tet>& tets, const std::vector<Index>& region, const std::vector<Tet>& fresh) {
+  const auto faces = [](const Tet& m) {
+    return std::array<tet::FaceKey, 4>{tet::face_key(m[1], m[2], m[3]), tet::face_key(m[0], m[2], m[3]),
+                                       tet::face_key(m[0], m[1], m[3]), tet::face_key(m[0], m[1], m[2])};
+  };
+  std::unordered_map<tet::FaceKey, int, tet::FaceKeyHash> count;
+  for (Index r : region)
+    for (const tet::FaceKey& k : faces(tets[r])) ++count[k];
+  for (auto it = count.begin(); it != count.end();) it = it->second == 2 ? count.erase(it) : std::next(it);
+  for (auto& entry : count) entry.second = -entry.second;  // the outside: -1 each
+  for (const Tet& m : fresh)
+    for (const tet::FaceKey& k : faces(m)) ++count[k];
+  for (const auto& entry : count)
+    if (entry.second != 0 && entry.second != 2) return false;
+  return true;
 }
 
 // A stuck tetrahedron with two free nodes close together (two interior nodes placed too near
@@ -71,6 +91,10 @@ std::vector<Index> collapse_free_edge(tet::TetComplex& cx, std::vector<Vec3>& X,
             if (x == gone) x = keep;
           fresh.push_back(m);
         }
+        // the collapse must leave the region's outside as it is and close every face inside:
+        // where the two nodes share a neighbour that is not on their edge's ring, it would not
+        // (two tetrahedra on one face), and the replacement would be refused
+        if (!same_outside(cx.tet, region, fresh)) continue;
         const Vec3 old = X[keep];
         // where it is, the edge's middle, and the mean of the merged star's other nodes
         Vec3 mean = Vec3::Zero();
