@@ -26,6 +26,12 @@ struct TetQuality {
 
 TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+// α̂ = r / R of the tetrahedron whose edges from one corner are u, v, w and whose surface area is
+// `area`: with 6V = u·(v×w), r = 3V / S and R = |N| / (2·6V), N = |u|²(v×w) + |v|²(w×u) +
+// |w|²(u×v) the circumcentre's numerator, α̂ = (6V)² / (S |N|), no division by a small volume.
+// 0 for a degenerate one. tet_quality's α̂, and the measure of the optimiser's mean-shape passes.
+double alpha_from_edges(const Vec3& u, const Vec3& v, const Vec3& w, double area);
+
 // The smallest corner solid angle alone (steradians, the same formula as tet_quality's), for the
 // min-max criterion of the local transformations (thesis 7.5), which evaluates it millions of
 // times. Orientation is not judged: the callers check it exactly with orient3d.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bisect/quality.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "optimize/sliver_repair.hpp"
@@ -16,42 +17,34 @@ using tet::tet_angle_key;
 
 namespace {
 
-// α̂ = r / R of the tetrahedron (a, b, c, d): with 6V = det, r = 3V / S and R = |N| / (2 det), N
-// the circumcentre's numerator relative to a (as in tet_quality), α̂ = det² / (S |N|).
+// α̂ of the tetrahedron (a, b, c, d) (alpha_from_edges, as tet_quality grades it).
 double alpha(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 u = b - a, w = c - a, z = d - a;
-  const double det = u.dot(w.cross(z));
   const double area = 0.5 * (u.cross(w).norm() + w.cross(z).norm() + z.cross(u).norm() + (w - u).cross(z - u).norm());
-  const Vec3 n = u.squaredNorm() * w.cross(z) + w.squaredNorm() * z.cross(u) + z.squaredNorm() * u.cross(w);
-  const double nlen = n.norm();
-  if (!(area > 0) || !(nlen > 0)) return 0;
-  return det * det / (area * nlen);
+  return alpha_from_edges(u, w, z, area);
 }
 
 double alpha(const std::vector<Vec3>& X, const Tet& t) { return alpha(X[t[0]], X[t[1]], X[t[2]], X[t[3]]); }
 
-// The same with node v of t at p.
-double alpha_with(const std::vector<Vec3>& X, const Tet& t, Index v, const Vec3& p) {
-  const auto at = [&](int i) -> const Vec3& { return t[i] == v ? p : X[t[i]]; };
-  return alpha(at(0), at(1), at(2), at(3));
-}
+// A star with node v at p: the sum of its α̂, and the node moves' objective, minus the sum of
+// 1 / α̂, which weighs a poor tetrahedron far more than a good one (the sum of α̂ itself traded
+// poor ones for good ones); -infinity when a tetrahedron is flat.
+struct StarScore {
+  double alpha_sum = 0;
+  double objective = 0;
+};
 
-double star_alpha(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v, const Vec3& p) {
-  double sum = 0;
-  for (Index t : around) sum += alpha_with(X, tets[t], v, p);
-  return sum;
-}
-
-// The node moves' objective: minus the sum of 1 / α̂ over the star, which weighs a poor
-// tetrahedron far more than a good one (the sum of α̂ itself traded poor ones for good ones).
-double star_objective(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v, const Vec3& p) {
-  double sum = 0;
+StarScore star_score(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v, const Vec3& p) {
+  StarScore s;
   for (Index t : around) {
-    const double a = alpha_with(X, tets[t], v, p);
-    if (!(a > 1e-12)) return -std::numeric_limits<double>::infinity();
-    sum -= 1 / a;
+    const Tet& u = tets[t];
+    const auto at = [&](int i) -> const Vec3& { return u[i] == v ? p : X[u[i]]; };
+    const double a = alpha(at(0), at(1), at(2), at(3));
+    if (!(a > 1e-12)) return {s.alpha_sum, -std::numeric_limits<double>::infinity()};
+    s.alpha_sum += a;
+    s.objective -= 1 / a;
   }
-  return sum;
+  return s;
 }
 
 // The tetrahedra the passes work from: α̂ under this, and what touches them. Lower is cheaper:
@@ -78,22 +71,15 @@ struct Running {
 
 // 2-3 across face f of t when it raises the mean and keeps the smallest key.
 bool flip23(tet::TetComplex& cx, Index t, int f, Running& run) {
-  const Index n = cx.nb[t][f];
-  if (n < 0 || cx.is_constrained(t, f)) return false;
-  const auto fv = cx.face(t, f);
-  Index e = -1;
-  for (Index x : cx.tet[n])
-    if (x != fv[0] && x != fv[1] && x != fv[2]) e = x;
-  const std::vector<Vec3>& X = cx.X;
   std::vector<Tet> fresh;
+  if (!cx.flip23_tets(t, f, &fresh)) return false;
+  const Index n = cx.nb[t][f];
+  const std::vector<Vec3>& X = cx.X;
   double sum = 0;
   const double need = std::min(cx.q[t], cx.q[n]);
-  for (Index c : fv) {
-    Tet m = cx.tet[t];
-    m[cx.corner_of(t, c)] = e;
-    if (!positive(X, m) || tet_angle_key(X, m) < need) return false;
+  for (const Tet& m : fresh) {
+    if (tet_angle_key(X, m) < need) return false;
     sum += alpha(X, m);
-    fresh.push_back(m);
   }
   const double gain = sum - alpha(X, cx.tet[t]) - alpha(X, cx.tet[n]);
   if (!(gain > run.mean() + 1e-9)) return false;
@@ -155,9 +141,8 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
     scale /= std::max(count, 1);
     if (!(scale > 0)) continue;
     const Vec3 old = X[v];
-    const double before = star_alpha(X, cx.tet, around, node, old);
-    const double obj_before = star_objective(X, cx.tet, around, node, old);
-    if (!std::isfinite(obj_before)) continue;
+    const StarScore before = star_score(X, cx.tet, around, node, old);
+    if (!std::isfinite(before.objective)) continue;
     std::vector<double> was_cos(around.size());
     for (std::size_t i = 0; i < around.size(); ++i) was_cos[i] = dihedral_cos(X, cx.tet[around[i]]);
     const double h = 1e-4 * scale;
@@ -165,14 +150,14 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
     for (int k = 0; k < 3; ++k) {
       Vec3 e = Vec3::Zero();
       e[k] = h;
-      g[k] = (star_objective(X, cx.tet, around, node, old + e) - obj_before) / h;
+      g[k] = (star_score(X, cx.tet, around, node, old + e).objective - before.objective) / h;
     }
     const double glen = g.norm();
     if (!(glen > 0) || !std::isfinite(glen)) continue;
     for (double s = 0.2 * scale; s > 1e-3 * scale; s *= 0.5) {
       const Vec3 p = old + (s / glen) * g;
-      if (!(star_objective(X, cx.tet, around, node, p) > obj_before + 1e-9 * std::abs(obj_before))) continue;
-      const double after = star_alpha(X, cx.tet, around, node, p);
+      const StarScore after = star_score(X, cx.tet, around, node, p);
+      if (!(after.objective > before.objective + 1e-9 * std::abs(before.objective))) continue;
       X[v] = p;
       bool ok = true;
       for (std::size_t i = 0; i < around.size() && ok; ++i) {
@@ -184,7 +169,7 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
         continue;
       }
       cx.moved(around);
-      run.sum += after - before;
+      run.sum += after.alpha_sum - before.alpha_sum;
       ++moves;
       break;
     }

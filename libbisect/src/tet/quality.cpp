@@ -122,13 +122,15 @@ TetQuality tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   const double area = area2 / 2;
   if (area > 0) q.gamma = kGoodnessBeta * (det * det / 36) / (area * area * area);
 
-  // α̂ = r / R with r = 3V/S and circumcentre (relative to p0) N / (2·det),
-  //   N = |u|²(v×w) + |v|²(w×u) + |w|²(u×v),
-  // so α̂ = det² / (S·|N|): no division by the (possibly tiny) volume.
+  q.alpha = alpha_from_edges(u, v, w, area);
+  return q;
+}
+
+double alpha_from_edges(const Vec3& u, const Vec3& v, const Vec3& w, double area) {
+  const double det = u.dot(v.cross(w));
   const Vec3 n = u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v);
   const double nlen = n.norm();
-  if (area > 0 && nlen > 0) q.alpha = det * det / (area * nlen);
-  return q;
+  return area > 0 && nlen > 0 ? det * det / (area * nlen) : 0;
 }
 
 std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled) {

@@ -127,6 +127,11 @@ class TetComplex {
   // tetrahedra, which a 4-1 flip merges. False, with v still in the complex, when no edge at v
   // can go (its ring is longer than kMaxRing or has no valid triangulation).
   bool remove_vertex(Index v);
+  // The three tetrahedra a 2-3 transformation across face f of t would make (each corner of the
+  // face replaced by the node beyond it), into `fresh`; false when f is on the boundary or
+  // constrained, or one of them would not be positive (the segment between the two apexes misses
+  // the face).
+  bool flip23_tets(Index t, int f, std::vector<Tet>* fresh) const;
   // improve() from every face of the given tetrahedra (new or changed ones), without a bound.
   std::int64_t improve_around(const std::vector<Index>& tets);
   // improve() from every unconstrained interior face.

@@ -65,20 +65,27 @@ bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& 
   return false;
 }
 
-bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
+bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
   const Index n = nb[t][f];
   if (n < 0 || is_constrained(t, f)) return false;
   const auto fv = face(t, f);
   Index e = -1;
   for (int g = 0; g < 4; ++g)
     if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) e = tet[n][g];
-  std::vector<Tet> fresh;
+  fresh->clear();
   for (Index c : fv) {  // each face corner of t replaced by e
     Tet m = tet[t];
     m[corner_of(t, c)] = e;
     if (!positive(X, m)) return false;  // the segment between the apexes misses the face
-    fresh.push_back(m);
+    fresh->push_back(m);
   }
+  return true;
+}
+
+bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
+  std::vector<Tet> fresh;
+  if (!flip23_tets(t, f, &fresh)) return false;
+  const Index n = nb[t][f];
   const double need = std::min(q[t], q[n]) * (1 + 1e-9);
   for (const Tet& m : fresh)
     if (!(tet_angle_key(X, m) > need)) return false;  // the smallest solid angle would not rise

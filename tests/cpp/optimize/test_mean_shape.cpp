@@ -30,7 +30,7 @@ struct JitteredCube : GridCube {
 };
 
 struct Measures {
-  double alpha_mean = 0, key_min = 1e300, dihedral_min = 180;
+  double alpha_mean = 0, key_min = 1e300;
   std::size_t under = 0;  // tetrahedra with a dihedral angle under 10.5 degrees
 };
 
@@ -44,7 +44,6 @@ Measures measure(const TetComplex& cx, const std::vector<Vec3>& X) {
     const TetQuality q = tet_quality(X[u[0]], X[u[1]], X[u[2]], X[u[3]]);
     m.alpha_mean += q.alpha, ++n;
     m.key_min = std::min(m.key_min, tet::tet_angle_key(X, u));
-    m.dihedral_min = std::min(m.dihedral_min, q.dihedral_min);
     if (worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) > std::cos(10.5 * kPi / 180)) ++m.under;
   }
   m.alpha_mean /= static_cast<double>(n);

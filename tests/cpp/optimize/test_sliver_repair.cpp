@@ -66,13 +66,8 @@ TEST(SliverRepair, TwoFreeNodesTooCloseBecomeOne) {
   const Vec3 twin = g.X[8 + 21] + Vec3(0.006, 0.005, 0.006);
   g.X.push_back(twin);
   g.fixed.push_back(0);
-  std::vector<Index> inside;
-  for (std::size_t v = 8; v < g.X.size(); ++v) inside.push_back(static_cast<Index>(v));
-  const std::vector<std::array<Index, 3>> boundary{{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                                                   {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  const std::vector<Tet> tets = fill_convex_cell(g.X, boundary, inside, Vec3(0.5, 0.5, 0.5), true);
   TetComplex cx(g.X);
-  cx.build(tets);
+  cx.build(g.fill());
   const auto used = [&] {
     std::set<Index> nodes;
     for (std::size_t t = 0; t < cx.tet.size(); ++t)
