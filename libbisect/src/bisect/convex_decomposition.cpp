@@ -251,6 +251,10 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
       ++finished;
       continue;
     }
+    std::vector<Index> nodes;  // the region's nodes, for the planes through a vertex
+    for (const auto& kv : edges) nodes.push_back(key_lo(kv.first)), nodes.push_back(key_hi(kv.first));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     std::vector<ReflexEdge> order;
     for (const ReflexEdge& e : reflex)
       if (!deferred[r].count(edge_key(e.a, e.b))) order.push_back(e);
@@ -269,7 +273,7 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
       int tried = 0;
       for (const ReflexEdge& e : order) {
         if (level < 0 && ++tried > kWideMarginEdges) break;
-        const std::vector<CutPlane> planes = candidate_planes(m, e, opt.max_candidates);
+        const std::vector<CutPlane> planes = candidate_planes(m, e, opt.max_candidates, nodes, opt.curved_faces);
         for (int method : {stage.methods[0], stage.methods[1]}) {
           if (done) break;
           for (const CutPlane& pl : planes) {

@@ -172,6 +172,8 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
     // through them (the thesis's tolerance is a thousandth of a degree) leave slivers at the pole.
     // A cell a degree short of convex is still seen whole from inside.
     dopt.reflex_tol_deg = std::max(dopt.reflex_tol_deg, 1.0);
+    dopt.curved_faces.assign(out.proxy.face_tri.size(), 0);
+    for (std::size_t f = 0; f < out.proxy.face_tri.size(); ++f) dopt.curved_faces[f] = out.proxy.face_tri[f] >= 0;
     try {
       out.d = decompose(out.proxy.input, dopt);
       return out;

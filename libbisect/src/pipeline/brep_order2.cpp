@@ -75,7 +75,9 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
     for (std::size_t k = 0; k < g.pieces[p].tris.size(); ++k) {
       const auto& t = g.pieces[p].tris[k];
       for (Index v : t)
-        if (id[v] < 0) throw MeshingError(face_name(g.pieces[p].face) + ": a surface node is in no tetrahedron");
+        if (id[v] < 0)
+          throw MeshingError(in.source + ": " + face_name(g.pieces[p].face) + ": the surface node at " + point_name(X[v]) +
+                             " is in no tetrahedron (a defect of the mesher)");
       out.tris.insert(out.tris.end(), {id[t[0]], id[t[1]], id[t[2]]});
       out.tri_tag.push_back(g.pieces[p].face);
       refs.push_back({p, k});

@@ -67,8 +67,11 @@ TEST(MeanShape, RaisesTheMeanAndKeepsTheSmallestAngles) {
   for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(c.X[v], start[v]) << v;
   RecordProperty("alpha_mean", std::to_string(before.alpha_mean) + " -> " + std::to_string(after.alpha_mean));
   // the cached keys follow the moves and flips
-  for (std::size_t t = 0; t < cx.tet.size(); ++t)
-    if (cx.alive[t]) EXPECT_DOUBLE_EQ(cx.q[t], tet::tet_angle_key(c.X, cx.tet[t])) << t;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    if (cx.alive[t]) {
+      EXPECT_DOUBLE_EQ(cx.q[t], tet::tet_angle_key(c.X, cx.tet[t])) << t;
+    }
+  }
 }
 
 TEST(MeanShape, TheSameMeshOnEveryRun) {
