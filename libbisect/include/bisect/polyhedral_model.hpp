@@ -105,11 +105,13 @@ struct DecomposeOptions {
   double short_edge_rel = 0.05;  // reject chords shorter than this times the shortest edge of
                                  // the face they cross
   double reflex_tol_deg = 1e-3;  // an edge is reflex when its angle exceeds 180 + this
-  int max_candidates = 7;        // planes per edge (6.4.1), at least 10 degrees apart
+  int max_candidates = 7;        // planes per edge (6.4.1), at least 10 degrees apart (besides the
+                                 // planes through a vertex at a nearly flat edge, plane_selection.hpp)
   double band_rel = 0.4;         // edge following: relative distance of the bandwidth test (7.3.3)
-  // Per input face: 1 when it is a facet of a curved surface (the B-rep route's proxy). A nearly
-  // flat reflex edge beside such a facet is cut by its bisector first (plane_selection.hpp); empty
-  // (a polyhedral input, whose facets are its surface): the thesis's order everywhere.
+  // Per input face: 1 when it is a facet of a curved surface. The B-rep route sets it from its
+  // proxy (the polyhedral route clears it: a polyhedral input's facets are its surface). A nearly
+  // flat reflex edge beside such a facet is cut by its bisector first (plane_selection.hpp);
+  // empty: the thesis's order everywhere.
   std::vector<char> curved_faces;
   std::function<bool(double)> progress;  // fraction done; return false to cancel
 

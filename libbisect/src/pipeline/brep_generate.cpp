@@ -12,7 +12,6 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
-#include "geom/predicates.hpp"
 #include "optimize/inverted_refill.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/brep_bodies.hpp"
@@ -250,21 +249,8 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   TetMesh out = pipeline::assemble_brep_mesh(best->grids, cx, best->X, in, opt.order, &st->straightened_edges,
                                              [&assembly_poll] { return assembly_poll.cancelled(); });
   // no mesh leaves inside out, or with a tetrahedron flat to round-off: a stage's slip is an
-  // error naming the place (and the next proxy is tried), not a bad mesh. Flat: six times its
-  // volume, in floating point as a solver computes its Jacobian, under kFlat times its longest
-  // edge cubed (a regular tetrahedron: 0.71; a 0.1 degree sliver: about 1e-3; corpus/Cone_1.brep's
-  // first proxy left one of 1e-15 at the apex, smallest dihedral angle 1e-13 degrees, which the
-  // order-2 check refused while the 4-node mesh kept it)
-  constexpr double kFlat = 1e-10;
-  for (std::size_t t = 0; t < out.num_tets(); ++t) {
-    const Vec3 &a = out.nodes[out.tet_node(t, 0)], &b = out.nodes[out.tet_node(t, 1)], &c = out.nodes[out.tet_node(t, 2)],
-               &d = out.nodes[out.tet_node(t, 3)];
-    if (geom::orient3d(a, b, c, d) <= 0) throw inside_out(out.region[t], (a + b + c + d) / 4, {});
-    const double longest = std::max({(b - a).norm(), (c - a).norm(), (d - a).norm(), (c - b).norm(), (d - b).norm(), (d - c).norm()});
-    if (!((b - a).dot((c - a).cross(d - a)) > kFlat * longest * longest * longest))
-      throw MeshingError(in.source + ": " + solid_name(in, out.region[t]) + ": the tetrahedron at " + point_name((a + b + c + d) / 4) +
-                         " is flat to round-off: a solver's Jacobian there is noise (a defect of the mesher)");
-  }
+  // error naming the place (and the next proxy is tried), not a bad mesh
+  pipeline::refuse_degenerate_tets(in, out);
   return out;
 }
 

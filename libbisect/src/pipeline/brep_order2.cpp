@@ -6,6 +6,7 @@
 #include <map>
 
 #include "bisect/errors.hpp"
+#include "geom/predicates.hpp"
 #include "bisect/validate.hpp"
 
 namespace bisect::pipeline {
@@ -196,6 +197,20 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
                          " is nearly flat: its 10-node Jacobian is not positive even with straight edges (a defect of the mesher)");
     }
   return out;
+}
+
+void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m) {
+  constexpr double kFlat = 1e-10;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)], &d = m.nodes[m.tet_node(t, 3)];
+    const std::string where = in.source + ": " + solid_name(in, m.region[t]) + ": ";
+    if (geom::orient3d(a, b, c, d) <= 0)
+      throw MeshingError(where + "a tetrahedron at " + point_name((a + b + c + d) / 4) + " came out inside out (a defect of the mesher)");
+    const double longest = std::max({(b - a).norm(), (c - a).norm(), (d - a).norm(), (c - b).norm(), (d - b).norm(), (d - c).norm()});
+    if (!((b - a).dot((c - a).cross(d - a)) > kFlat * longest * longest * longest))
+      throw MeshingError(where + "the tetrahedron at " + point_name((a + b + c + d) / 4) +
+                         " is flat to round-off: a solver's Jacobian there is noise (a defect of the mesher)");
+  }
 }
 
 }  // namespace bisect::pipeline

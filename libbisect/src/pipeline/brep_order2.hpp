@@ -26,4 +26,12 @@ namespace bisect::pipeline {
 TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const std::vector<Vec3>& X, const BrepInput& in, int order,
                            std::int64_t* straightened, const std::function<bool()>& cancelled = {});
 
+// Throws MeshingError naming the solid and the place when a tetrahedron of `m` (its corners) is
+// inside out, or flat to round-off: six times its volume, in floating point as a solver computes
+// its Jacobian, under 1e-10 times its longest edge cubed (a regular tetrahedron: 0.71; a 0.1
+// degree sliver: about 1e-3; corpus/Cone_1.brep's first proxy once left one of 1e-15 at the
+// apex, smallest dihedral angle 1e-13 degrees, which the order-2 check refused while the 4-node
+// mesh kept it).
+void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m);
+
 }  // namespace bisect::pipeline

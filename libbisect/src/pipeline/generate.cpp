@@ -57,6 +57,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
       return opt.progress(shown);
     };
   DecomposeOptions dopt = opt.decompose;
+  dopt.curved_faces.clear();  // the B-rep route's, by its proxy's faces: a polyhedral input's facets are its surface
   if (progress) dopt.progress = [&](double x) { return progress(0.2 * x); };
   const Decomposition d = decompose(in, dopt);
   st.init_geom = d.stats.prepare_seconds;
