@@ -1,10 +1,11 @@
 // Candidate bisection planes through a reflex edge (thesis 6.4.1): planes in the inner wedge,
 // between the extensions of the two faces at the edge, at most seven and at least ten degrees
-// apart (and, at a nearly flat edge, up to two more through a vertex). Their order follows the thesis's aim, "avoiding the creation of small angles between
+// apart (and, at a nearly flat edge beside a curved face, up to two more through a vertex).
+// Their order follows the thesis's aim, "avoiding the creation of small angles between
 // polyhedral faces and bisection planes":
-// - at a reflex edge of the input's own faces, and at any edge whose wedge exceeds 180 degrees by
-//   kFlatEdge or more, the face extensions first (they add no new angle to the cells), then the
-//   wedge's bisector, then the quarter and eighth planes;
+// - in a polyhedral input, at an edge with no facet of a curved surface beside it, and at any
+//   edge whose wedge exceeds 180 degrees by kFlatEdge or more: the face extensions first (they
+//   add no new angle to the cells), then the wedge's bisector, then the quarter and eighth planes;
 // - at a nearly flat edge beside a facet of a curved surface (the B-rep route's proxy: a hole
 //   faceted every 22.5 degrees), the bisector first. There a face's extension meets the true
 //   surface grazing, at half the facet angle: a cut line left the hole's edge at 11 degrees, with
