@@ -87,6 +87,13 @@ struct GenerateOptions {
   std::string limit_cause;
 };
 
+// Seconds of the optimisation's parts: the complex's build with its constraints, the
+// transformation passes, the smoothing passes, the refill of folds, the sliver repair, the
+// mean-shape passes.
+struct OptimizeTimes {
+  double build = 0, flips = 0, smooth = 0, refill = 0, slivers = 0, mean = 0;
+};
+
 struct GenerateStats {
   std::int64_t nodes = 0, tets = 0, regions = 0, convex_cells = 0;
   double spacing = 0;                 // the Np used
@@ -123,6 +130,7 @@ struct GenerateStats {
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;
+  OptimizeTimes optimize_parts;  // where the optimisation's time went
 };
 
 // Throws InputError (bad input, no element count), MeshingError (a stage could not finish,

@@ -182,16 +182,22 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
 MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds) {
   MeanCounts n;
   Running run;
+  std::vector<char> poor(cx.tet.size(), 0);
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
-    if (cx.alive[t]) run.sum += alpha(X, cx.tet[t]), run.count += 1;
-  std::vector<char> poor;
+    if (cx.alive[t]) {  // the first round's list from the same look at each tetrahedron
+      const double a = alpha(X, cx.tet[t]);
+      run.sum += a, run.count += 1;
+      poor[t] = a < kWorkBelow;
+    }
   for (int round = 0; round < rounds; ++round) {
     std::int64_t flips = 0;
     // the tetrahedra to work from, marked by id; one made in this round gets an id past the end
     // or a freed one, which then may be worked from too (the same tests hold for it)
     const std::size_t end = cx.tet.size();
-    poor.assign(end, 0);
-    for (std::size_t t = 0; t < end; ++t) poor[t] = cx.alive[t] && alpha(X, cx.tet[t]) < kWorkBelow;
+    if (round > 0) {
+      poor.assign(end, 0);
+      for (std::size_t t = 0; t < end; ++t) poor[t] = cx.alive[t] && alpha(X, cx.tet[t]) < kWorkBelow;
+    }
     for (std::size_t i = 0; i < end; ++i) {
       cx.poll(i);
       const Index t = static_cast<Index>(i);

@@ -10,8 +10,8 @@ namespace bisect::optimize {
 using tet::Tet;
 
 // The live tetrahedra around node v, found by a walk across the faces at v from t0 (a live
-// tetrahedron with corner v): the cost is the star's, not the mesh's (no node-to-tetrahedron
-// index to keep up through the flips). t0 comes first.
+// tetrahedron with corner v; TetComplex::star): the cost is the star's, not the mesh's (no
+// node-to-tetrahedron index to keep up through the flips). t0 comes first.
 // With `limit`: the search stops once the star holds more than `limit` tetrahedra (what it
 // returns is then only a part, larger than limit).
 std::vector<Index> star(const tet::TetComplex& cx, Index v, Index t0, std::size_t limit = static_cast<std::size_t>(-1));

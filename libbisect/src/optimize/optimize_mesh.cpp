@@ -1,6 +1,7 @@
 #include "optimize/optimize_mesh.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 
 #include "bisect/errors.hpp"
@@ -20,6 +21,9 @@ namespace {
 // sr) and from what their changes make. Lower is cheaper: at 0.10 the mean alpha fell by 0.6%
 // (lug.stl, 10^5), at 0.12 by 0.05%; at 0.15 it held (lug, flange).
 constexpr double kWorkBelowKey = 0.15;
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 }  // namespace
 
@@ -66,6 +70,7 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
   };
   for (int pass = 0; pass < passes; ++pass) {
     next_step();
+    auto t0 = Clock::now();
     if (pass < opt.passes) {
       if (pass == 0) {
         n.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
@@ -74,7 +79,9 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
         n.flips += cx.improve_around(poor);
       }
     }
+    n.times.flips += seconds_since(t0);
     next_step();
+    t0 = Clock::now();
     if (pass < opt.smooth_passes) {
       if (pass == 0) {
         std::vector<Index> all;
@@ -87,20 +94,26 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
         smooth_nodes(cx, X, fixed, poor);
       }
     }
+    n.times.smooth += seconds_since(t0);
   }
   next_step();
+  auto t0 = Clock::now();
   // a fold the passes left (a proxy cell's, inverted_refill.hpp) is cut out and filled again
   // before the sliver repair, which then sees what the refill made
   const RefillCounts refill = refill_inverted(cx, X, fixed);
   n.refilled_folds = static_cast<std::int64_t>(refill.refilled);
   n.folds_left = static_cast<std::int64_t>(refill.remaining);
   relist();
+  n.times.refill = seconds_since(t0);
+  t0 = Clock::now();
   // no sliver repair over a fold: its Delaunay insertions take the tetrahedra as not
   // overlapping, and over one they broke the complex (FreeCAD's constraint_tie at 6,044, order
   // 2, first proxy: "a replacement does not fill the space it replaces"); the mesh is refused
   // anyway, by the caller, naming the fold's place
   if (opt.sliver_rounds > 0 && n.folds_left == 0)
     n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));
+  n.times.slivers = seconds_since(t0);
+  t0 = Clock::now();
   // the mean shape last: its changes keep what the repair won (mean_shape.hpp), whereas with
   // the repair after them it worked from a different start and left more slivers (plate-hole
   // at 10^5: 179 tetrahedra under 10 degrees for 8)
@@ -109,6 +122,7 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
     const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds);
     n.mean_changes = mean.flips + mean.moves;
   }
+  n.times.mean = seconds_since(t0);
   if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
   cx.changed = outer_log;
   return n;

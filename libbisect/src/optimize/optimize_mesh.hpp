@@ -22,6 +22,7 @@ struct OptimizeCounts {
   std::int64_t mean_changes = 0;  // transformations and node moves of the mean-shape passes
   std::int64_t refilled_folds = 0;  // inverted tetrahedra's neighbourhoods filled again (inverted_refill.hpp)
   std::int64_t folds_left = 0;      // tetrahedra still inside out after the refill (no sliver repair then): refuse the mesh
+  OptimizeTimes times;              // seconds per part (the complex's build is the caller's)
 };
 
 // cx works on X; fixed[v]: node v never moves (X may grow: the sliver repair inserts nodes).

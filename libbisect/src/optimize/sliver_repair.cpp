@@ -247,7 +247,7 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
       auto insert_at = [&](const Vec3& p) {
         X.push_back(p);
         fixed.push_back(0);
-        std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), start, &replaced);
+        std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(X.size() - 1), start, &replaced, true);
         if (made.empty()) {  // on a face or node after all: left out
           X.pop_back();
           fixed.pop_back();

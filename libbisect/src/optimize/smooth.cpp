@@ -33,6 +33,7 @@ std::size_t smooth_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::v
   }
   std::size_t moves = 0;
   std::size_t step = 0;
+  std::vector<double> keys;  // the star's keys at the new place (handed on: not computed twice)
   for (const auto& [v, t0] : todo) {
     cx.poll(step++);
     // t0 was at v when listed; a move does not change which tetrahedra there are
@@ -43,16 +44,18 @@ std::size_t smooth_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::v
     X[v] = neighbour_mean(X, cx.tet, around, v);
     bool ok = true;
     double after = std::numeric_limits<double>::max();
+    keys.clear();
     for (Index t : around) {
       if (!positive(X, cx.tet[t])) {
         ok = false;
         break;
       }
-      after = std::min(after, tet_angle_key(X, cx.tet[t]));
+      keys.push_back(tet_angle_key(X, cx.tet[t]));
+      after = std::min(after, keys.back());
     }
     if (ok && after >= before) {
       ++moves;
-      cx.moved(around);
+      cx.moved(around, keys);
     } else {
       X[v] = old;
     }

@@ -221,7 +221,10 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   cx.boundary_flips = false;  // the surface grid is the true surface's: it stays as meshed
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(kBar.built + (kBar.optimized - kBar.built) * x); };
+  const double built = since(t_opt);
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, best->X, best->on_boundary, opt.optimize, optimize_progress);
+  st->optimize_parts = oc.times;
+  st->optimize_parts.build = built;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;
   st->mean_changes = oc.mean_changes;

@@ -112,7 +112,10 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   for (char& k : fixed) k = k != pipeline::kInside;
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
+  const double built = since(t_opt);
   const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize, optimize_progress);
+  st.optimize_parts = oc.times;
+  st.optimize_parts.build = built;
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
   st.mean_changes = oc.mean_changes;
@@ -143,7 +146,9 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"proxy_retry_reason\": " << json_string(s.proxy_retry_reason)
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
-    << "}, \"quality\": " << quality_json(q) << "}";
+    << "}, \"optimize_parts\": {\"build\": " << s.optimize_parts.build << ", \"flips\": " << s.optimize_parts.flips
+    << ", \"smooth\": " << s.optimize_parts.smooth << ", \"refill\": " << s.optimize_parts.refill << ", \"slivers\": " << s.optimize_parts.slivers
+    << ", \"mean\": " << s.optimize_parts.mean << "}, \"quality\": " << quality_json(q) << "}";
   return o.str();
 }
 

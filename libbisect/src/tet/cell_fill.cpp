@@ -119,17 +119,19 @@ void brio_order(const std::vector<Vec3>& X, std::vector<Index>& v) {
   Vec3 lo = X[v[0]], hi = X[v[0]];
   for (Index i : v) lo = lo.cwiseMin(X[i]), hi = hi.cwiseMax(X[i]);
   const Vec3 span = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
-  auto morton = [&](Index i) {
+  // each node's Morton code once (within the comparison it was computed twice per comparison)
+  std::vector<std::uint64_t> morton(X.size(), 0);
+  for (Index i : v) {
     std::uint64_t code = 0;
     const Vec3 q = (X[i] - lo).cwiseQuotient(span);
     const std::uint64_t x = static_cast<std::uint64_t>(q.x() * 1023), y = static_cast<std::uint64_t>(q.y() * 1023), z = static_cast<std::uint64_t>(q.z() * 1023);
     for (int b = 9; b >= 0; --b) code = (code << 3) | (((x >> b) & 1) << 2) | (((y >> b) & 1) << 1) | ((z >> b) & 1);
-    return code;
-  };
+    morton[i] = code;
+  }
   for (std::size_t begin = 0, size = 8; begin < v.size(); begin += size, size *= 2) {
     const std::size_t end = std::min(v.size(), begin + size);
     std::sort(v.begin() + static_cast<std::ptrdiff_t>(begin), v.begin() + static_cast<std::ptrdiff_t>(end),
-              [&](Index a, Index b) { return morton(a) < morton(b); });
+              [&](Index a, Index b) { return morton[a] < morton[b]; });
   }
 }
 

@@ -88,6 +88,8 @@ class TetComplex {
   void constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces);
   void refresh_quality();  // after the nodes moved (smoothing)
   void moved(const std::vector<Index>& tets);  // after some tetrahedra's nodes moved
+  // the same with their keys (tet_angle_key) already known: keys[i] is tets[i]'s
+  void moved(const std::vector<Index>& tets, const std::vector<double>& keys);
   std::size_t live_count() const { return tet.size() - free_.size(); }
 
   // Swaps the tetrahedra `old` for `fresh` (same region of space). Returns the new ids.
@@ -100,11 +102,18 @@ class TetComplex {
   bool is_constrained(Index t, int f) const;
   int corner_of(Index t, Index v) const;  // -1 when v is not a corner
   std::vector<Index> tets_at(Index v) const;  // the live tetrahedra with corner v (a full scan)
+  // The live tetrahedra with corner v, found from t0 (one of them) across the faces at v, in
+  // the order they are reached, t0 first; the search stops once more than `limit` are found.
+  std::vector<Index> star(Index v, Index t0, std::size_t limit) const;
   int face_towards(Index t, Index other) const;  // the face of t shared with `other`, -1 if none
 
   // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
   // when the walk does not settle); -1 when p is outside every tetrahedron.
-  Index locate(const Vec3& p, Index start) const;
+  // near_only: when the walk does not settle, only the kNearSearch tetrahedra nearest p reached
+  // from where it stopped are searched, not the whole complex (for a point placed beside a
+  // tetrahedron, which may lie outside the mesh: a whole search cost 0.15 s at 10^6 each time).
+  static constexpr std::size_t kNearSearch = 4096;
+  Index locate(const Vec3& p, Index start, bool near_only = false) const;
   // Inserts node v (its position already in X) inside the complex: the tetrahedra whose
   // closure holds it are split (1-4 inside, 2-6 on a face, n-2n on an edge). Returns the new
   // tetrahedra, empty when v lies outside or on an existing node.
@@ -113,7 +122,8 @@ class TetComplex {
   // tetrahedron reachable without crossing a constrained face whose circumsphere holds v is
   // replaced too, the cavity shrunk until v sees all its faces from inside. `replaced`, if
   // given, receives the cavity's tetrahedra: replace(made, *replaced) undoes the insertion.
-  std::vector<Index> insert_delaunay(Index v, Index start, std::vector<Tet>* replaced = nullptr);
+  // near_only: v is looked for only near `start` (locate's near_only).
+  std::vector<Index> insert_delaunay(Index v, Index start, std::vector<Tet>* replaced = nullptr, bool near_only = false);
 
   // Local min-max transformations (7.5) from the given faces onwards, whenever they raise the
   // smallest solid angle of the tetrahedra involved: 2-3 across a face, 2-2 at the outer
@@ -163,6 +173,26 @@ class TetComplex {
   // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
   // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
   mutable std::vector<unsigned> mark_;
+  // replace's working lists, kept from call to call (a flip's are a few dozen entries, and
+  // allocating them anew was a sixth of replace's time): the old set's outside faces with the
+  // tetrahedron across, and every face to be matched
+  struct Outer {
+    FaceKey key;
+    Index n;
+    int nf;
+    bool held;  // constrained
+  };
+  struct Side {
+    FaceKey key;
+    Index t;
+    int f;
+    bool fresh, held;
+  };
+  std::vector<Outer> outer_;
+  std::vector<Side> sides_;
+  // the transformations' candidate tetrahedra and the ring they replace, kept the same way
+  std::vector<Tet> fresh_;
+  std::vector<Index> old_;
   mutable unsigned stamp_ = 0;
   unsigned new_stamp() const {
     mark_.resize(tet.size(), 0);

@@ -75,9 +75,10 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
   };
   double before = 1e300;
   for (std::size_t i = 0; i < k; ++i) before = std::min(before, q[ring[i]]);
-  std::vector<Tet> fresh;
+  std::vector<Tet>& fresh = fresh_;
   if (!ring_triangulation(a, b, p.data(), k, before * (1 + 1e-9), &fresh)) return fail();
-  for (Index id : replace(std::vector<Index>(ring.begin(), ring.begin() + n), fresh))
+  old_.assign(ring.begin(), ring.begin() + n);
+  for (Index id : replace(old_, fresh))
     for (int g = 0; g < 4; ++g) queue.push_back({id, g});
   return true;
 }

@@ -83,13 +83,14 @@ bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
 }
 
 bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
-  std::vector<Tet> fresh;
+  std::vector<Tet>& fresh = fresh_;
   if (!flip23_tets(t, f, &fresh)) return false;
   const Index n = nb[t][f];
   const double need = std::min(q[t], q[n]) * (1 + 1e-9);
   for (const Tet& m : fresh)
     if (!(tet_angle_key(X, m) > need)) return false;  // the smallest solid angle would not rise
-  for (Index id : replace({t, n}, fresh))
+  old_.assign({t, n});
+  for (Index id : replace(old_, fresh))
     for (int g = 0; g < 4; ++g) queue.push_back({id, g});
   return true;
 }

@@ -18,7 +18,7 @@ namespace bisect::tet {
 
 using geom::orient3d;
 
-Index TetComplex::locate(const Vec3& p, Index start) const {
+Index TetComplex::locate(const Vec3& p, Index start, bool near_only) const {
   Index t = start;
   if (t < 0 || t >= static_cast<Index>(tet.size()) || !alive[t]) {
     t = -1;
@@ -65,21 +65,24 @@ Index TetComplex::locate(const Vec3& p, Index start) const {
     const Tet& q = tet[k];
     return (0.25 * (X[q[0]] + X[q[1]] + X[q[2]] + X[q[3]]) - p).squaredNorm();
   };
-  std::vector<char> seen(tet.size(), 0);
+  const unsigned seen = new_stamp();  // reached
   std::priority_queue<std::pair<double, Index>, std::vector<std::pair<double, Index>>, std::greater<>> near;
   near.push({distance(t), t});
-  seen[t] = 1;
+  mark_[t] = seen;
+  std::size_t searched = 0;
   while (!near.empty()) {
     const Index k = near.top().second;
     near.pop();
     if (holds(k)) return k;
+    if (near_only && ++searched >= kNearSearch) return -1;
     for (int f = 0; f < 4; ++f) {
       const Index u = nb[k][f];
-      if (u >= 0 && alive[u] && !seen[u]) seen[u] = 1, near.push({distance(u), u});
+      if (u >= 0 && alive[u] && !marked(u, seen)) mark_[u] = seen, near.push({distance(u), u});
     }
   }
+  if (near_only) return -1;
   for (std::size_t k = 0; k < tet.size(); ++k)
-    if (alive[k] && !seen[k] && holds(static_cast<Index>(k))) return static_cast<Index>(k);
+    if (alive[k] && !marked(static_cast<Index>(k), seen) && holds(static_cast<Index>(k))) return static_cast<Index>(k);
   return -1;
 }
 
@@ -117,9 +120,9 @@ std::vector<Index> TetComplex::insert(Index v, Index start) {
   return replace(hold, fresh);
 }
 
-std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector<Tet>* replaced) {
+std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector<Tet>* replaced, bool near_only) {
   const Vec3& p = X[v];
-  const Index t0 = locate(p, start);
+  const Index t0 = locate(p, start, near_only);
   if (t0 < 0) return {};
   std::vector<Index> seed;  // the tetrahedra whose closure holds p
   if (!holders(p, t0, &seed)) return {};

@@ -178,6 +178,20 @@ TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
   for (const char* key : {"\"nodes\"", "\"tets\"", "\"regions\": 2", "\"convex_cells\"", "\"init_geom\"", "\"bisect\"", "\"gen_nodes\"",
                           "\"gen_tets\"", "\"optimize\"", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
     EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
+  // where the optimisation's time went: six parts, none negative, together within its time
+  const auto number_after = [&](const std::string& from, const char* key) {
+    const std::size_t at = s.find(std::string("\"") + key + "\": ", s.find(from));
+    return at == std::string::npos ? -1.0 : std::atof(s.c_str() + at + std::string(key).size() + 4);
+  };
+  const double optimize = number_after("\"times\"", "optimize");
+  double parts = 0;
+  for (const char* part : {"build", "flips", "smooth", "refill", "slivers", "mean"}) {
+    const double x = number_after("\"optimize_parts\"", part);
+    EXPECT_GE(x, 0) << part << " in " << s;
+    parts += x;
+  }
+  EXPECT_GT(parts, 0) << s;
+  EXPECT_LE(parts, optimize * 1.001 + 1e-4) << s;
   CliResult q = run("quality '" + out.string() + "'");
   EXPECT_EQ(q.code, 0) << q.out << q.err;
   EXPECT_NE(q.out.find("valid: yes"), std::string::npos) << q.out;
