@@ -374,7 +374,7 @@ int main(int argc, char** argv) {
     c << "model,r,tets,total_s,gen_nodes_s,gen_tets_s\n";
     std::printf("\n## Scaling on lug.stl\n\n| R | tets | total s | gen_nodes s | gen_tets s |\n|---|---|---|---|---|\n");
     std::vector<double> xs, ys;
-    for (long r : {1000L, 3000L, 10000L, 30000L, 100000L, 300000L, 1000000L}) {
+    for (long r : {1000L, 3000L, 10000L, 30000L, 100000L, 300000L, 1000000L, 3000000L, 5000000L}) {
       if (r > max_r) break;
       std::string js;
       const Mesh m = ours((shared / "models/stl/lug.stl").string(), r, &js);

@@ -71,7 +71,7 @@ struct Running {
 
 // 2-3 across face f of t when it raises the mean and keeps the smallest key.
 bool flip23(tet::TetComplex& cx, Index t, int f, Running& run) {
-  std::vector<Tet> fresh;
+  thread_local std::vector<Tet> fresh;  // kept from call to call: tried at every face of every poor tetrahedron
   if (!cx.flip23_tets(t, f, &fresh)) return false;
   const Index n = cx.nb[t][f];
   const std::vector<Vec3>& X = cx.X;

@@ -8,7 +8,10 @@ std::vector<Index> star(const tet::TetComplex& cx, Index v, Index t0, std::size_
 
 Vec3 neighbour_mean(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v) {
   Vec3 sum = Vec3::Zero();
-  std::vector<Index> seen;  // the star's other nodes, each once (sorted: a star may be large)
+  // the star's other nodes, each once (sorted: a star may be large); the list is kept from call
+  // to call on each thread (smoothing asks for every node's mean)
+  thread_local std::vector<Index> seen;
+  seen.clear();
   for (Index t : around)
     for (Index w : tets[t])
       if (w != v) seen.push_back(w);

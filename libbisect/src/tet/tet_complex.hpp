@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "bisect/types.hpp"
+#include "tet/edge_table.hpp"
 
 namespace bisect::tet {
 
@@ -169,7 +170,7 @@ class TetComplex {
     int k;
     std::array<Index, kMaxRing> ring;
   };
-  std::unordered_map<std::uint64_t, Failure> failed_;  // edge (low node << 32 | high) -> failure
+  EdgeTable<Failure> failed_;  // edge (low node << 32 | high) -> failure
   // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
   // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
   mutable std::vector<unsigned> mark_;

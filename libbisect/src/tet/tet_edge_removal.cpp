@@ -52,9 +52,8 @@ int TetComplex::edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index
 
 bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue) {
   const std::uint64_t edge = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
-  const auto seen = failed_.find(edge);
-  if (seen != failed_.end()) {
-    const Failure& was = seen->second;
+  if (const Failure* seen = failed_.find(edge)) {
+    const Failure& was = *seen;
     if (was.stamp == kForever) return false;
     bool same = true;
     for (int i = 0; i < was.k && same; ++i) same = alive[was.ring[i]] && born_[was.ring[i]] <= was.stamp;
@@ -64,13 +63,13 @@ bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pa
   bool closed = false, held = false;
   const int n = edge_ring(t, a, b, static_cast<int>(kMaxRing), ring.data(), p.data(), &closed, &held);
   if (held) {  // a, b on a constrained face: that never goes, nor does the edge
-    failed_[edge] = Failure{kForever, 0, {}};
+    failed_.put(edge, Failure{kForever, 0, {}});
     return false;
   }
   if (!closed || n < 3) return false;
   const std::size_t k = static_cast<std::size_t>(n);
   auto fail = [&] {
-    failed_[edge] = Failure{clock_, n, ring};
+    failed_.put(edge, Failure{clock_, n, ring});
     return false;
   };
   double before = 1e300;
