@@ -51,9 +51,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags) {
   // node's few dozen faces sorted by their other two nodes and their id (4 t + f), so that
   // equal faces meet in the order of the tetrahedra. A hash map of the open faces cost 1.2 s
   // at 10^6 tetrahedra, a tenth of the run.
-  Index nodes = 0;
-  for (const Tet& t : tet)
-    for (Index v : t) nodes = std::max(nodes, v + 1);
+  const Index nodes = static_cast<Index>(X.size());  // every corner is a node of X
   struct Half {
     Index b, c, tf;  // the face's two larger nodes, and 4 * tetrahedron + face
   };
@@ -126,20 +124,18 @@ void TetComplex::refresh_quality() {
 }
 
 void TetComplex::moved(const std::vector<Index>& tets) {
-  ++clock_;
-  for (Index t : tets) {
-    q[t] = tet_angle_key(X, tet[t]);
-    born_[t] = clock_;
-  }
-  if (changed) changed->insert(changed->end(), tets.begin(), tets.end());
+  for (Index t : tets) q[t] = tet_angle_key(X, tet[t]);
+  stamp_moved(tets);
 }
 
 void TetComplex::moved(const std::vector<Index>& tets, const std::vector<double>& keys) {
+  for (std::size_t i = 0; i < tets.size(); ++i) q[tets[i]] = keys[i];
+  stamp_moved(tets);
+}
+
+void TetComplex::stamp_moved(const std::vector<Index>& tets) {
   ++clock_;
-  for (std::size_t i = 0; i < tets.size(); ++i) {
-    q[tets[i]] = keys[i];
-    born_[tets[i]] = clock_;
-  }
+  for (Index t : tets) born_[t] = clock_;
   if (changed) changed->insert(changed->end(), tets.begin(), tets.end());
 }
 
@@ -182,7 +178,7 @@ std::vector<Index> TetComplex::star(Index v, Index t0, std::size_t limit) const 
     for (int f = 0; f < 4; ++f) {
       if (tet[t][f] == v) continue;  // face f is opposite corner f: the others hold v
       const Index n = nb[t][f];
-      if (n < 0 || mark_[n] == in) continue;
+      if (n < 0 || marked(n, in)) continue;
       mark_[n] = in;
       around.push_back(n);
     }

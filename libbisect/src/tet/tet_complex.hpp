@@ -162,6 +162,7 @@ class TetComplex {
   // programme is skipped. born_: a clock value per tetrahedron, set when made or moved.
   std::vector<std::uint64_t> born_;
   std::uint64_t clock_ = 0;
+  void stamp_moved(const std::vector<Index>& tets);  // moved()'s clock, born_ and log
   // A failure: the clock then and the ring; kForever for an edge on a constrained face.
   static constexpr std::size_t kMaxRing = 7;
   static constexpr std::uint64_t kForever = ~std::uint64_t{0};
