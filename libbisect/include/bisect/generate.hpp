@@ -91,7 +91,7 @@ struct GenerateOptions {
 // transformation passes, the smoothing passes, the refill of folds, the sliver repair, the
 // mean-shape passes.
 struct OptimizeTimes {
-  double build = 0, flips = 0, smooth = 0, refill = 0, slivers = 0, mean = 0;
+  double build = 0, blocks = 0, flips = 0, smooth = 0, refill = 0, slivers = 0, mean = 0;
 };
 
 struct GenerateStats {
@@ -122,6 +122,7 @@ struct GenerateStats {
   // inverted tetrahedra (a last-resort cell's fold) whose neighbourhood the optimiser cut out and
   // filled again (optimize/inverted_refill.hpp)
   std::int64_t refilled_folds = 0;
+  std::int64_t optimize_blocks = 0;   // blocks the optimisation's passes ran in (0: on one thread; optimize/block_pass.hpp)
   // B-rep route: the proxies tried (1: the first one meshed; each failed one costs a whole
   // decomposition, placement and filling), and when a later one meshed, what ended the first
   // (its message, naming the place): why a run took two or three times its usual time

@@ -2,33 +2,71 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 #include "bisect/errors.hpp"
 #include "optimize/inverted_refill.hpp"
 #include "optimize/mean_shape.hpp"
+#include "optimize/min_max_passes.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
-#include "optimize/smooth.hpp"
 #include "util/progress_poll.hpp"
 
 namespace bisect::optimize {
 
 namespace {
 
-// The first pass of transformations and smoothing goes over the whole mesh; the later ones work
-// from the tetrahedra whose key (tet_angle_key) is below this (smallest solid angle under 0.30
-// sr) and from what their changes make. Lower is cheaper: at 0.10 the mean alpha fell by 0.6%
-// (lug.stl, 10^5), at 0.12 by 0.05%; at 0.15 it held (lug, flange).
-constexpr double kWorkBelowKey = 0.15;
-
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-}  // namespace
+// Times the passes and the sliver repair may run again round what the repair left.
+constexpr int kRepairCycles = 2;
 
-OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt,
-                             const std::function<bool(double)>& progress) {
+// The tetrahedra with a dihedral angle under kSliverBelowDeg, and the cosine of the smallest
+// angle among them (1 for a flat one, 2 for one inside out; -1 when there are none).
+std::vector<Index> sliver_tets(const tet::TetComplex& cx, const std::vector<Vec3>& X, double* worst) {
+  const double limit = std::cos(kSliverBelowDeg * 3.14159265358979323846 / 180);
+  std::vector<Index> out;
+  *worst = -1;
+  for (Index t : all_below_key(cx, sliver_key(kSliverBelowDeg))) {
+    const tet::Tet& u = cx.tet[t];
+    const double c = worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]);
+    if (c <= limit) continue;
+    out.push_back(t);
+    *worst = std::max(*worst, c);
+  }
+  return out;
+}
+
+// What the sliver repair left: how many, and the worst (sliver_tets).
+struct Slivers {
+  std::size_t count = 0;
+  double worst = -1;
+  Slivers(const tet::TetComplex& cx, const std::vector<Vec3>& X) { count = sliver_tets(cx, X, &worst).size(); }
+  bool better_than(const Slivers& o) const {
+    return (count < o.count && worst <= o.worst) || (count <= o.count && worst < o.worst);
+  }
+};
+
+// The tetrahedra with a dihedral angle under kSliverBelowDeg, and those at their nodes.
+std::vector<Index> around_slivers(const tet::TetComplex& cx, const std::vector<Vec3>& X) {
+  double worst;
+  std::vector<Index> out;
+  for (Index t : sliver_tets(cx, X, &worst))
+    for (Index v : cx.tet[t]) {
+      const std::vector<Index> s = star(cx, v, t);
+      out.insert(out.end(), s.begin(), s.end());
+    }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// Both entries: `filled` given, cx is built here from it (after the passes in blocks when it is
+// large enough to cut); else cx is built and all its passes run on this thread.
+OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec3>& X, const std::vector<char>& fixed,
+                        const OptimizeOptions& opt, const std::function<bool(double)>& progress, int threads) {
   OptimizeCounts n;
   // Stop within a pass: the loops poll cx.cancelled, which calls progress now and then
   util::ProgressPoll poll(progress);
@@ -40,84 +78,126 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
   } restore{cx, outer_cancelled};
   if (progress) cx.cancelled = [&poll] { return poll.cancelled(); };
   const int passes = std::max(opt.passes, opt.smooth_passes);
-  const double steps = 2.0 * passes + 2;
-  double step = 0;
-  const auto next_step = [&] {
-    if (progress && poll.report(step / steps)) throw Cancelled();
-    ++step;
+  // the fraction of the bar at each step, roughly as the time goes: the passes three quarters
+  // (in blocks: the blocks to kBlocksEnd, then the complex's build), the refill and the sliver
+  // repair an eighth, the mean shape an eighth
+  constexpr double kBlocksEnd = 0.6, kPassesEnd = 0.75, kMeanStart = 0.875;
+  const auto at = [&](double fraction) {
+    if (progress && poll.report(fraction)) throw Cancelled();
   };
-  const double sliver_below = sliver_key(kSliverBelowDeg);
-  // every change (flip, node move, insertion) goes on a log, from which the lists follow
+  int step = 0;
+  const auto next_step = [&] { at(kPassesEnd * step++ / (2.0 * passes)); };
+  at(0);
+  BlockPassCounts blocks;
+  if (filled) {
+    auto t0 = Clock::now();
+    if (passes > 0) {
+      BlockOptions bo;
+      bo.passes = opt.passes, bo.smooth_passes = opt.smooth_passes;
+      bo.boundary_flips = opt.boundary_flips;
+      bo.edge_removal_below = cx.edge_removal_below;
+      bo.threads = threads;
+      std::function<bool(double)> block_progress;
+      if (progress) block_progress = [&](double x) {
+        poll.at(kBlocksEnd * x);
+        return !poll.cancelled();
+      };
+      blocks = block_pass(filled->tets, filled->tags, X, fixed, filled->held, filled->surface_tag, bo, block_progress);
+      n.flips += blocks.flips;
+      n.blocks = static_cast<std::int64_t>(blocks.blocks);
+    }
+    n.times.blocks = seconds_since(t0);
+    t0 = Clock::now();
+    if (blocks.blocks > 0) at(kBlocksEnd);
+    cx.build(std::move(filled->tets), std::move(filled->tags));
+    cx.constrain(filled->held);
+    cx.surface_tag = std::move(filled->surface_tag);
+    cx.boundary_flips = opt.boundary_flips;
+    n.times.build = seconds_since(t0);
+  }
+  if (blocks.blocks > 0) {
+    // the passes were made in blocks but where the walls of all three grids meet: from there
+    std::vector<Index> from;
+    for (std::size_t t = 0; t < cx.tet.size(); ++t)
+      for (Index v : cx.tet[t])
+        if (blocks.held_throughout[v]) {
+          from.push_back(static_cast<Index>(t));
+          break;
+        }
+    const PassCounts pc = min_max_passes(cx, X, fixed, opt.passes, opt.smooth_passes, &from);
+    n.flips += pc.flips;
+    n.times.flips = pc.flip_seconds, n.times.smooth = pc.smooth_seconds;
+  } else {
+    const PassCounts pc = min_max_passes(cx, X, fixed, opt.passes, opt.smooth_passes, nullptr, next_step);
+    n.flips += pc.flips;
+    n.times.flips = pc.flip_seconds, n.times.smooth = pc.smooth_seconds;
+  }
+  // every change (the refill's, the repair's, the mean shape's) goes on the caller's log, if any
   std::vector<Index> changed;
   std::vector<Index>* const outer_log = cx.changed;
   cx.changed = &changed;
-  // once `listed`: every tetrahedron under kWorkBelowKey, and every one under the sliver
-  // repair's key (the only ones that can have a dihedral angle under kSliverBelowDeg)
-  std::vector<Index> poor, sliver_list;
-  bool listed = false;
-  const auto relist = [&] {
-    if (!listed) {  // once, after the first pass: one look at each stored key
-      poor = all_below_key(cx, kWorkBelowKey);
-      sliver_list = all_below_key(cx, sliver_below);
-      listed = true;
-    } else {  // the lists and what changed since
-      poor.insert(poor.end(), changed.begin(), changed.end());
-      poor = below_key(cx, std::move(poor), kWorkBelowKey);
-      sliver_list.insert(sliver_list.end(), changed.begin(), changed.end());
-      sliver_list = below_key(cx, std::move(sliver_list), sliver_below);
-    }
-    changed.clear();
-  };
-  for (int pass = 0; pass < passes; ++pass) {
-    next_step();
-    auto t0 = Clock::now();
-    if (pass < opt.passes) {
-      if (pass == 0) {
-        n.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
-      } else {  // from the faces of the poor tetrahedra, and on from every tetrahedron made
-        relist();
-        n.flips += cx.improve_around(poor);
-      }
-    }
-    n.times.flips += seconds_since(t0);
-    next_step();
-    t0 = Clock::now();
-    if (pass < opt.smooth_passes) {
-      if (pass == 0) {
-        std::vector<Index> all;
-        all.reserve(cx.live_count());
-        for (std::size_t t = 0; t < cx.tet.size(); ++t)
-          if (cx.alive[t]) all.push_back(static_cast<Index>(t));
-        smooth_nodes(cx, X, fixed, all);
-      } else {  // the free nodes of the poor tetrahedra
-        relist();
-        smooth_nodes(cx, X, fixed, poor);
-      }
-    }
-    n.times.smooth += seconds_since(t0);
-  }
-  next_step();
+  at(kPassesEnd);
   auto t0 = Clock::now();
   // a fold the passes left (a proxy cell's, inverted_refill.hpp) is cut out and filled again
   // before the sliver repair, which then sees what the refill made
   const RefillCounts refill = refill_inverted(cx, X, fixed);
   n.refilled_folds = static_cast<std::int64_t>(refill.refilled);
   n.folds_left = static_cast<std::int64_t>(refill.remaining);
-  relist();
   n.times.refill = seconds_since(t0);
   t0 = Clock::now();
   // no sliver repair over a fold: its Delaunay insertions take the tetrahedra as not
   // overlapping, and over one they broke the complex (FreeCAD's constraint_tie at 6,044, order
   // 2, first proxy: "a replacement does not fill the space it replaces"); the mesh is refused
-  // anyway, by the caller, naming the fold's place
-  if (opt.sliver_rounds > 0 && n.folds_left == 0)
-    n.sliver_moves = static_cast<std::int64_t>(repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, std::move(sliver_list)));
+  // anyway, by the caller, naming the fold's place. It starts from every tetrahedron under its
+  // key (the only ones that can have a dihedral angle under kSliverBelowDeg).
+  if (opt.sliver_rounds > 0 && n.folds_left == 0) {
+    n.sliver_moves = static_cast<std::int64_t>(
+        repair_slivers(cx, X, fixed, kSliverBelowDeg, opt.sliver_rounds, all_below_key(cx, sliver_key(kSliverBelowDeg))));
+    // What the rounds left (a cluster of slivers where a cell's nodes lie near spheres, a flat
+    // tetrahedron across the edge of two faces): the passes round it, which change where the
+    // repair starts from, and the repair again. Its rounds are chaotic there (lug at 10^6 was
+    // left with 0 to 34 tetrahedra under 10 degrees by the grid the passes' blocks were cut by),
+    // and a second go can also make things worse (Angled.step at 10^5: 2.4 to 0.4 degrees), so
+    // a go that does not leave fewer or better slivers is undone.
+    for (int again = 0; again < kRepairCycles; ++again) {
+      const Slivers before(cx, X);
+      if (before.count == 0) break;
+      const std::vector<Index> around = around_slivers(cx, X);
+      const std::vector<Vec3> X0 = X;
+      const std::size_t logged = changed.size();
+      std::vector<tet::TetComplex::Replacement> journal;
+      struct Journal {  // kept for this go alone, on every way out (Stop included)
+        tet::TetComplex& cx;
+        ~Journal() { cx.journal = nullptr; }
+      } journal_on{cx};
+      cx.journal = &journal;
+      std::vector<char> held = fixed;
+      held.resize(X.size(), 0);  // nodes the repair inserted are free (past the end of `fixed`)
+      const PassCounts pc = min_max_passes(cx, X, held, opt.passes, opt.smooth_passes, &around);
+      const std::size_t moves = repair_slivers(cx, X, held, kSliverBelowDeg, opt.sliver_rounds, around_slivers(cx, X));
+      cx.journal = nullptr;
+      const Slivers after(cx, X);
+      if (after.better_than(before)) {
+        n.flips += pc.flips;
+        n.sliver_moves += static_cast<std::int64_t>(moves);
+        continue;
+      }
+      std::copy(X0.begin(), X0.end(), X.begin());
+      cx.undo(journal);
+      X.resize(X0.size());
+      std::vector<Index> moved;  // the keys of what the go moved, at the old places again
+      for (std::size_t i = logged; i < changed.size(); ++i)
+        if (cx.alive[changed[i]]) moved.push_back(changed[i]);
+      cx.moved(moved);
+      break;
+    }
+  }
   n.times.slivers = seconds_since(t0);
   t0 = Clock::now();
   // the mean shape last: its changes keep what the repair won (mean_shape.hpp), whereas with
   // the repair after them it worked from a different start and left more slivers (plate-hole
   // at 10^5: 179 tetrahedra under 10 degrees for 8)
-  next_step();
+  at(kMeanStart);
   if (opt.mean_rounds > 0 && n.folds_left == 0) {
     const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds);
     n.mean_changes = mean.flips + mean.moves;
@@ -126,6 +206,18 @@ OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const st
   if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
   cx.changed = outer_log;
   return n;
+}
+
+}  // namespace
+
+OptimizeCounts optimize_mesh(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const OptimizeOptions& opt,
+                             const std::function<bool(double)>& progress) {
+  return optimise(cx, nullptr, X, fixed, opt, progress, 1);
+}
+
+OptimizeCounts optimize_filled(tet::TetComplex& cx, FilledMesh filled, std::vector<Vec3>& X, const std::vector<char>& fixed,
+                               const OptimizeOptions& opt, const std::function<bool(double)>& progress, int threads) {
+  return optimise(cx, &filled, X, fixed, opt, progress, threads);
 }
 
 }  // namespace bisect::optimize

@@ -148,6 +148,7 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
                            std::vector<Index> start) {
   const double limit = std::cos(below_deg * kPi / 180), key = sliver_key(below_deg);
   std::vector<char> fixed = fixed_nodes;  // grows with the nodes inserted (free)
+  fixed.resize(X.size(), 0);              // and those an earlier repair inserted are free too
   // what each round changes (node moves, flips, insertions) is the next round's list, with the
   // tetrahedra no move improved; the caller's log, if any, gets it all too
   std::vector<Index>* const outer_log = cx.changed;

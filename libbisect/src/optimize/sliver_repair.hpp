@@ -21,7 +21,8 @@ namespace bisect::optimize {
 // below sliver_key(below_deg) (every such tetrahedron's is: a list that holds all tetrahedra
 // under that key misses none); each later round looks only at what the last one changed and at
 // the tetrahedra it could not improve. cx must work on X and hold every tetrahedron's current
-// key. Returns the moves, insertions and collapses made.
+// key. fixed[v]: node v never moves; nodes past its end (inserted by an earlier repair) are free.
+// Returns the moves, insertions and collapses made.
 std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, double below_deg, int rounds,
                            std::vector<Index> start);
 

@@ -87,39 +87,30 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
   const auto t_opt = Clock::now();
   tet::TetComplex cx(b.X);
-  util::ProgressPoll build_poll(progress);  // Stop within the complex's build, as on the B-rep route
-  build_poll.at(0.8);
-  if (progress) cx.cancelled = [&build_poll] { return build_poll.cancelled(); };
-  cx.build(std::move(b.tets), std::move(b.region));
-  cx.cancelled = nullptr;
-  {
-    // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5)
-    // within their input face
-    std::unordered_set<tet::FaceKey, tet::FaceKeyHash> input_faces;
-    for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
-      const ModelFace& face = d.model.faces[f];
-      if (!face.alive || face.source < 0) continue;
-      for (const auto& t : b.grids.face_tris[f]) {
-        input_faces.insert(tet::face_key(t[0], t[1], t[2]));
-        if (face.front < 0 || face.back < 0) cx.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
-      }
+  optimize::FilledMesh filled{std::move(b.tets), std::move(b.region), {}, {}};
+  // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5) within
+  // their input face
+  for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
+    const ModelFace& face = d.model.faces[f];
+    if (!face.alive || face.source < 0) continue;
+    for (const auto& t : b.grids.face_tris[f]) {
+      filled.held.insert(tet::face_key(t[0], t[1], t[2]));
+      if (face.front < 0 || face.back < 0) filled.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
     }
-    cx.constrain(input_faces);
-    cx.boundary_flips = opt.optimize.boundary_flips;
   }
   // nodes on input faces stay where they are
   std::vector<char> fixed = pipeline::node_kinds(d.model, b);
   for (char& k : fixed) k = k != pipeline::kInside;
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
-  const double built = since(t_opt);
-  const optimize::OptimizeCounts oc = optimize::optimize_mesh(cx, b.X, fixed, opt.optimize, optimize_progress);
+  const optimize::OptimizeCounts oc =
+      optimize::optimize_filled(cx, std::move(filled), b.X, fixed, opt.optimize, optimize_progress, opt.threads);
   st.optimize_parts = oc.times;
-  st.optimize_parts.build = built;
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
   st.mean_changes = oc.mean_changes;
   st.refilled_folds = oc.refilled_folds;
+  st.optimize_blocks = oc.blocks;
   Vec3 fold;
   Index fold_region = 0;
   if (oc.folds_left > 0 && optimize::find_fold(cx, b.X, &fold, &fold_region))  // never a mesh with a fold
@@ -142,11 +133,12 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
-    << ", \"refilled_folds\": " << s.refilled_folds << ", \"proxy_attempts\": " << s.proxy_attempts
+    << ", \"refilled_folds\": " << s.refilled_folds << ", \"optimize_blocks\": " << s.optimize_blocks << ", \"proxy_attempts\": " << s.proxy_attempts
     << ", \"proxy_retry_reason\": " << json_string(s.proxy_retry_reason)
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes
     << ", \"gen_tets\": " << s.gen_tets << ", \"optimize\": " << s.optimize << ", \"total\": " << s.total
-    << "}, \"optimize_parts\": {\"build\": " << s.optimize_parts.build << ", \"flips\": " << s.optimize_parts.flips
+    << "}, \"optimize_parts\": {\"build\": " << s.optimize_parts.build << ", \"blocks\": " << s.optimize_parts.blocks
+    << ", \"flips\": " << s.optimize_parts.flips
     << ", \"smooth\": " << s.optimize_parts.smooth << ", \"refill\": " << s.optimize_parts.refill << ", \"slivers\": " << s.optimize_parts.slivers
     << ", \"mean\": " << s.optimize_parts.mean << "}, \"quality\": " << quality_json(q) << "}";
   return o.str();

@@ -117,6 +117,38 @@ void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces
   }
 }
 
+void TetComplex::undo(std::vector<Replacement>& entries) {
+  std::vector<Replacement>* const keep = journal;
+  journal = nullptr;  // the undoing is not journalled
+  // the tetrahedra by their nodes, not their ids: an id freed by a later change may have been
+  // taken again, and what an undone change puts back comes under new ids
+  std::unordered_map<FaceKey, std::vector<std::pair<Tet, Index>>, FaceKeyHash> where;
+  const auto key = [](const Tet& t) { return face_key(t[0], t[1], t[2]); };
+  for (const Replacement& r : entries)
+    for (const Tet& t : r.made) where[key(t)];
+  for (std::size_t t = 0; t < tet.size(); ++t)
+    if (alive[t]) {
+      const auto it = where.find(key(tet[t]));
+      if (it != where.end()) it->second.push_back({tet[t], static_cast<Index>(t)});
+    }
+  const auto id_of = [&](const Tet& t) {
+    for (const auto& [u, id] : where[key(t)])
+      if (u == t && alive[id] && tet[id] == t) return id;
+    throw MeshingError("tetrahedral complex: a change to undo is not in the complex");
+  };
+  for (auto r = entries.rbegin(); r != entries.rend(); ++r) {
+    std::vector<Index> made;
+    for (const Tet& t : r->made) made.push_back(id_of(t));
+    const std::vector<Index> back = replace(made, r->old);
+    for (std::size_t i = 0; i < back.size(); ++i) {
+      tag[back[i]] = r->old_tags[i];
+      where[key(r->old[i])].push_back({r->old[i], back[i]});
+    }
+  }
+  entries.clear();
+  journal = keep;
+}
+
 void TetComplex::refresh_quality() {
   for (std::size_t t = 0; t < tet.size(); ++t)
     if (alive[t]) q[t] = tet_angle_key(X, tet[t]);
@@ -210,6 +242,10 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf, is_constrained(o, f)});
     }
   const Index inherited = old.empty() ? 0 : tag[old.front()];
+  if (journal) {
+    journal->push_back({{}, {}, {}});
+    for (Index o : old) journal->back().old.push_back(tet[o]), journal->back().old_tags.push_back(tag[o]);
+  }
   for (Index o : old) {
     alive[o] = 0;
     free_.push_back(o);
@@ -243,6 +279,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
   }
   if (changed) changed->insert(changed->end(), ids.begin(), ids.end());
   if (touched) touched->insert(touched->end(), ids.begin(), ids.end());
+  if (journal) journal->back().made = fresh;
   // match every new face with another new one or with an old outside face: sorted by key,
   // equal keys meet (a new face pairs with at most one other)
   std::vector<Side>& sides = sides_;

@@ -63,7 +63,8 @@ class TetComplex {
   // Edge removal (a small dynamic programme per edge) is tried only where a tetrahedron's
   // smallest solid angle is below this key (tet_angle_key); above it the gain is small and the
   // cost is not. The default, tan(0.1), is Ω < 0.2 sr (the regular tetrahedron's is 0.551).
-  double edge_removal_below = 0.10033467208545055;
+  static constexpr double kEdgeRemovalBelow = 0.10033467208545055;
+  double edge_removal_below = kEdgeRemovalBelow;
   // When set, `replace` and `moved` append the tetrahedra they make or change: the optimiser's
   // work lists follow the changes without a scan of the mesh.
   std::vector<Index>* changed = nullptr;
@@ -71,6 +72,17 @@ class TetComplex {
   // its own per-tetrahedron data (face recovery's count of the present faces and edges) brings
   // just those up to date.
   std::vector<Index>* touched = nullptr;
+  // When set, `replace` appends what it did (the tetrahedra it made, those it took out and their
+  // tags), and undo() takes such a record back, last change first: a trial that came out worse
+  // is undone without a copy of the complex. Node moves are the caller's to put back (X) first,
+  // and afterwards the keys of the tetrahedra they moved (moved()).
+  struct Replacement {
+    std::vector<Tet> made;
+    std::vector<Tet> old;
+    std::vector<Index> old_tags;
+  };
+  std::vector<Replacement>* journal = nullptr;
+  void undo(std::vector<Replacement>& entries);
   // When set, the long loops (the transformations' queue, the smoothing, the sliver repair) call
   // it now and then (every kPollEvery steps); true stops them with Cancelled. The optimiser sets
   // it from the progress callback, so that Stop takes effect within a pass.

@@ -176,16 +176,16 @@ TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
   EXPECT_NE(r.out.find("tetrahedra"), std::string::npos) << r.out;
   const std::string s = slurp(stats);
   for (const char* key : {"\"nodes\"", "\"tets\"", "\"regions\": 2", "\"convex_cells\"", "\"init_geom\"", "\"bisect\"", "\"gen_nodes\"",
-                          "\"gen_tets\"", "\"optimize\"", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
+                          "\"gen_tets\"", "\"optimize\"", "\"optimize_blocks\": 0", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
     EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
-  // where the optimisation's time went: six parts, none negative, together within its time
+  // where the optimisation's time went: seven parts, none negative, together within its time
   const auto number_after = [&](const std::string& from, const char* key) {
     const std::size_t at = s.find(std::string("\"") + key + "\": ", s.find(from));
     return at == std::string::npos ? -1.0 : std::atof(s.c_str() + at + std::string(key).size() + 4);
   };
   const double optimize = number_after("\"times\"", "optimize");
   double parts = 0;
-  for (const char* part : {"build", "flips", "smooth", "refill", "slivers", "mean"}) {
+  for (const char* part : {"build", "blocks", "flips", "smooth", "refill", "slivers", "mean"}) {
     const double x = number_after("\"optimize_parts\"", part);
     EXPECT_GE(x, 0) << part << " in " << s;
     parts += x;

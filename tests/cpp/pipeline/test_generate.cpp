@@ -14,6 +14,7 @@
 #include "bisect/generate.hpp"
 #include "bisect/io.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "bisect/quality.hpp"
 #include "bisect/shared_models.hpp"
 #include "bisect/validate.hpp"
 #include "pipeline/generate_checks.hpp"
@@ -126,6 +127,35 @@ TEST(Generate, TheMeshIsTheSameForEveryThreadCount) {
   opt.threads = 2;
   opt.progress = [](double x) { return x < 0.5; };
   EXPECT_THROW(generate_mesh(in, opt), Cancelled);
+}
+
+// A mesh large enough for the optimisation's passes to run in blocks on several threads
+// (optimize/block_pass.hpp): still the same mesh for every thread count, regions and interface
+// included, and as good as the whole-mesh passes on one thread leave it.
+TEST(Generate, TheOptimisationInBlocksIsTheSameForEveryThreadCount) {
+  const PolyInput in = read_poly(std::string(BISECT_TEST_DATA) + "/cube-cavity-adjacent-cube.poly");
+  TetMesh first;
+  for (int threads : {1, 2, 4}) {
+    GenerateOptions opt;
+    opt.sizing.elements = 50000;
+    opt.threads = threads;
+    GenerateStats st;
+    const TetMesh m = generate_mesh(in, opt, &st);
+    EXPECT_GT(st.optimize_blocks, 1) << threads;
+    if (threads == 1) {
+      expect_sound(m, in, "blocks, threads 1");
+      const QualitySummary q = summarize_quality(element_quality(m));
+      EXPECT_GT(q.alpha.mean, 0.25);
+      EXPECT_GT(q.dihedral_min.min, 8.0);
+      first = m;
+      continue;
+    }
+    ASSERT_EQ(m.num_tets(), first.num_tets()) << threads;
+    EXPECT_TRUE(m.nodes == first.nodes) << threads;
+    EXPECT_TRUE(m.tets == first.tets) << threads;
+    EXPECT_TRUE(m.region == first.region) << threads;
+    EXPECT_TRUE(m.tris == first.tris) << threads;
+  }
 }
 
 // --order 2: the same corners and tetrahedra, a mid-node at the middle of every edge, shared by

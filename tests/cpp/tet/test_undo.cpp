@@ -1,0 +1,68 @@
+// The complex's journal: undo() takes back flips, edge removals and Delaunay insertions, last
+// first, to the same tetrahedra (ids aside), with their tags, and a complex that works on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "bisect/validate.hpp"
+#include "optimize/grid_cube.hpp"
+#include "tet/tet_complex.hpp"
+
+namespace bisect::tet {
+namespace {
+
+// The live tetrahedra as sorted node lists with their tags, sorted: equal for the same mesh.
+std::vector<std::pair<std::array<Index, 4>, Index>> canonical(const TetComplex& cx) {
+  std::vector<std::pair<std::array<Index, 4>, Index>> out;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    if (!cx.alive[t]) continue;
+    std::array<Index, 4> k = cx.tet[t];
+    std::sort(k.begin(), k.end());
+    out.push_back({k, cx.tag[t]});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(Undo, TakesBackFlipsAndInsertionsToTheSameMesh) {
+  optimize::GridCube g(7, 0.02);
+  TetComplex cx(g.X);
+  std::vector<Index> tags(g.tets.size());
+  for (std::size_t i = 0; i < tags.size(); ++i) tags[i] = static_cast<Index>(i % 3);  // tags that differ
+  cx.build(g.tets, tags);
+  const auto before = canonical(cx);
+  std::vector<TetComplex::Replacement> journal;
+  cx.journal = &journal;
+  const std::int64_t flips = cx.improve_all(std::numeric_limits<std::int64_t>::max());
+  // two nodes put in with Delaunay cavities, and flips after each
+  for (const Vec3& p : {Vec3(0.31, 0.42, 0.53), Vec3(0.77, 0.21, 0.66)}) {
+    g.X.push_back(p);
+    const std::vector<Index> made = cx.insert_delaunay(static_cast<Index>(g.X.size() - 1), 0);
+    ASSERT_FALSE(made.empty());
+    cx.improve_around(made);
+  }
+  cx.journal = nullptr;
+  ASSERT_GT(flips, 0);
+  ASSERT_GT(journal.size(), static_cast<std::size_t>(flips));
+  EXPECT_NE(canonical(cx), before);
+  cx.undo(journal);
+  EXPECT_TRUE(journal.empty());
+  g.X.resize(g.X.size() - 2);
+  EXPECT_EQ(canonical(cx), before);
+  // the neighbours hold: a valid mesh, and the complex works on
+  TetMesh m;
+  m.nodes = g.X;
+  for (const Tet& t : cx.tets()) m.add_tet(t.data());
+  EXPECT_TRUE(validate(m).empty());
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t])
+      for (int f = 0; f < 4; ++f) {
+        const Index n = cx.nb[t][f];
+        if (n >= 0) EXPECT_EQ(cx.face_towards(n, static_cast<Index>(t)) >= 0, true);
+      }
+  EXPECT_GT(cx.improve_all(std::numeric_limits<std::int64_t>::max()), 0);
+}
+
+}  // namespace
+}  // namespace bisect::tet
