@@ -20,7 +20,8 @@
 //    surface mesh included), at our count on lug, flange, plate-hole and part.step at 10^5 (and
 //    lug, flange, part at 10^6, lug at 5*10^6, as MAX_R allows): whole-process seconds at 2 and
 //    1 threads, peak memory, mean alpha, smallest dihedral, share under 10 degrees, our
-//    optimisation's share of our time; a CSV (generate_hxt.csv) in OUT_DIR.
+//    optimisation's share of our time; a CSV (generate_hxt.csv) and its plot (generate_hxt.png,
+//    through plot_hxt.py: the times and the peak memory side by side) in OUT_DIR.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -458,6 +459,9 @@ int main(int argc, char** argv) {
         << (o.ok && h.ok ? o.wall / h.wall : NAN) << '\n';
     }
     std::printf("csv: %s\n", csv.c_str());
+    c.close();
+    const std::string cmd = "/usr/bin/python3 '" + std::string(BISECT_BENCH_DIR) + "/plot_hxt.py' '" + csv + "' '" + out_dir + "/generate_hxt.png'";
+    if (std::system(cmd.c_str()) == 0) std::printf("plot: %s/generate_hxt.png\n", out_dir.c_str());
   }
   return 0;
 }

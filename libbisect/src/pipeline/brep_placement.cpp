@@ -6,21 +6,33 @@
 #include "pipeline/brep_cells.hpp"
 #include "pipeline/brep_morph.hpp"
 #include "pipeline/node_placement.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect::pipeline {
 namespace {
 
-// The cells' interior nodes in the proxy's geometry, at the size field's sizes.
-std::vector<std::vector<Vec3>> interior_nodes(const Decomposition& d, const size::SizeField& h, std::vector<nodes::Polytope>* polys,
-                                              std::int64_t* graded) {
-  std::vector<std::vector<Vec3>> placed;
-  for (const ConvexCell& c : d.cells) {
-    polys->push_back(cell_polytope(d.model, c));
-    std::size_t fine = 0;
-    placed.push_back(nodes::sized_cell_nodes(polys->back(), h, &fine));
-    *graded += static_cast<std::int64_t>(fine);
-  }
-  return placed;
+// A cell's interior nodes: where they are in the proxy's geometry (at the size field's sizes),
+// and where the morph takes them.
+struct CellNodes {
+  nodes::Polytope poly;
+  std::vector<Vec3> proxy, moved;
+  std::size_t fine = 0;  // placed finer than the cell's own spacing (graded)
+};
+
+// Every cell's, each on its own on the threads (a cell's nodes depend on it alone: the same for
+// every thread count).
+std::vector<CellNodes> interior_nodes(const Decomposition& d, const size::SizeField& h, const Morph& morph, int threads) {
+  std::vector<CellNodes> out(d.cells.size());
+  util::ordered_parallel(
+      d.cells.size(), util::thread_count(threads),
+      [&](std::size_t c) {
+        CellNodes& n = out[c];
+        n.poly = cell_polytope(d.model, d.cells[c]);
+        n.proxy = nodes::sized_cell_nodes(n.poly, h, &n.fine);
+        for (const Vec3& p : n.proxy) n.moved.push_back(p + morph.displacement(p));
+      },
+      [](std::size_t) {});
+  return out;
 }
 
 }  // namespace
@@ -45,21 +57,22 @@ BrepPlacement place_brep_nodes(const BrepInput& in, const BrepProxy& proxy, cons
     if (gn.on[v].kind == PointOn::kInterior) f.X[v] = gn.p[v] + morph.displacement(gn.p[v]);
     else f.on_boundary[v] = 1;
   }
-  std::vector<nodes::Polytope> polys;
-  const auto placed = interior_nodes(d, h, &polys, &f.graded_nodes);
+  const std::vector<CellNodes> placed = interior_nodes(d, h, morph, threads);
   std::vector<BrepCell>& cells = f.cells;
   cells.resize(d.cells.size());
   for (std::size_t c = 0; c < d.cells.size(); ++c) {
-    for (const Vec3& p : placed[c]) {
-      f.X.push_back(p + morph.displacement(p));
-      f.P.push_back(p);
+    const CellNodes& n = placed[c];
+    f.graded_nodes += static_cast<std::int64_t>(n.fine);
+    for (std::size_t i = 0; i < n.proxy.size(); ++i) {
+      f.X.push_back(n.moved[i]);
+      f.P.push_back(n.proxy[i]);
       f.on_boundary.push_back(0);
       cells[c].interior.push_back(static_cast<Index>(f.X.size() - 1));
     }
-    const Vec3 centre = polys[c].centroid();
+    const Vec3 centre = n.poly.centroid();
     cells[c].centre = centre + morph.displacement(centre);
     cells[c].centre_p = centre;
-    cells[c].volume = polys[c].volume();
+    cells[c].volume = n.poly.volume();
   }
   return f;
 }

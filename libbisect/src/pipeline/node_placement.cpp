@@ -5,6 +5,7 @@
 
 #include "nodes/cell_nodes.hpp"
 #include "nodes/graded_nodes.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect::pipeline {
 
@@ -49,11 +50,17 @@ Built place_nodes(const Decomposition& d, double np, const std::vector<double>& 
   b.X = b.grids.nodes;
   b.boundary_nodes = b.X.size();
   b.interior.assign(d.cells.size(), {});
-  std::vector<std::vector<Vec3>> uniform;
-  for (std::size_t c = 0; c < d.cells.size(); ++c) {
-    b.polys.push_back(cell_polytope(d.model, d.cells[c]));
-    uniform.push_back(nodes::shrink_cell_nodes(b.polys.back(), cell_np[c]));
-  }
+  // each cell's nodes on its own, on the threads (a cell's shrinking depends on it alone: the
+  // nodes are the same for every thread count)
+  b.polys.resize(d.cells.size());
+  std::vector<std::vector<Vec3>> uniform(d.cells.size());
+  util::ordered_parallel(
+      d.cells.size(), util::thread_count(threads),
+      [&](std::size_t c) {
+        b.polys[c] = cell_polytope(d.model, d.cells[c]);
+        uniform[c] = nodes::shrink_cell_nodes(b.polys[c], cell_np[c]);
+      },
+      [](std::size_t) {});
   // graded from the boundary's fine spacing (short edges); the shrinking's alone elsewhere
   nodes::GradedNodeStats gs;
   const auto placed = nodes::graded_cell_nodes(b.polys, uniform, b.grids.nodes, b.grids.spacing, np, grading, &gs);
