@@ -18,7 +18,7 @@ PassCounts min_max_passes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::
                           const std::vector<Index>* from, const std::function<void()>& step) {
   PassCounts n;
   // every change (flip, node move) goes on a log, from which the lists follow; the caller's log,
-  // if any, gets it all at the end
+  // if any, gets it all (as the lists take it, and the rest at the end)
   std::vector<Index> changed;
   std::vector<Index>* const outer_log = cx.changed;
   cx.changed = &changed;
@@ -42,6 +42,8 @@ PassCounts min_max_passes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::
       poor = below_key(cx, std::move(poor), kWorkBelowKey);
     }
     listed = true;
+    // the caller's log gets every change: what is cleared here too
+    if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
     changed.clear();
   };
   const int rounds = std::max(passes, smooth_passes);
