@@ -83,13 +83,20 @@ std::vector<Index> grid_labels(const std::vector<Tet>& tets, const std::vector<V
 void optimise_block(const Shared& s, Block& b) {
   // local numbering: the block's nodes in their global order, so that the smoothing visits them
   // in the order a whole-mesh pass does; `local` is a slot per global node (-1 when not in the
-  // block), kept per thread and cleared after each block
+  // block), kept per thread and cleared on every way out of each block
   thread_local std::vector<Index> local;
   local.resize(s.X.size(), -1);
   std::vector<Index> nodes;
+  struct Clear {
+    std::vector<Index>& local;
+    const std::vector<Index>& nodes;
+    ~Clear() {
+      for (Index g : nodes) local[g] = -1;
+    }
+  } clear{local, nodes};
   for (Index m : b.members)
     for (Index v : s.tets[m])
-      if (local[v] < 0) local[v] = 0, nodes.push_back(v);
+      if (local[v] < 0) nodes.push_back(v), local[v] = 0;
   std::sort(nodes.begin(), nodes.end());
   std::vector<Vec3> x(nodes.size());
   std::vector<char> held(nodes.size());
@@ -108,7 +115,6 @@ void optimise_block(const Shared& s, Block& b) {
     tets[i] = {local[k[0]], local[k[1]], local[k[2]], local[k[3]]};
     tags[i] = s.tags[b.members[i]];
   }
-  for (Index g : nodes) local[g] = -1;
   tet::TetComplex cx(x);
   cx.edge_removal_below = s.opt.edge_removal_below;
   cx.boundary_flips = s.opt.boundary_flips;
@@ -243,7 +249,7 @@ BlockPassCounts block_pass(std::vector<Tet>& tets, std::vector<Index>& tags, std
           for (const auto& [k, tag] : b.surface_out) out_surface[k] = tag;
           n.flips += b.flips, n.moves += b.moves;
           taken += b.members.size();
-          done = kGridStart[grid] + (kGridStart[grid + 1] - kGridStart[grid]) * static_cast<double>(taken) / static_cast<double>(members);
+          done = kGridStart[grid] + (kGridStart[grid + 1] - kGridStart[grid]) * static_cast<double>(taken) / static_cast<double>(std::max<std::size_t>(members, 1));
           b = Block{};
         },
         order, [&] { hook(); });
@@ -252,9 +258,9 @@ BlockPassCounts block_pass(std::vector<Tet>& tets, std::vector<Index>& tags, std
     tags = std::move(out_tags);
     if (opt.boundary_flips) surface_tag = std::move(out_surface);
     if (grid == 0) seeds.assign(X.size(), 1);
-    // fixed nodes too: a tetrahedron with every node on the surface sits at a wall without a
-    // free node (lug at 10^6: one at 5.3 degrees was left so, that the passes over the whole mesh
-    // flip away)
+    // fixed nodes too: a tetrahedron with every node on the surface can sit at a wall without a
+    // free node (lug at 10^6: one at 5.3 degrees was left so, which the passes over the whole
+    // mesh had flipped away)
     for (std::size_t v = 0; v < X.size(); ++v) seeds[v] = seeds[v] && node_block[v] == kShared;
   }
   n.held_throughout = std::move(seeds);

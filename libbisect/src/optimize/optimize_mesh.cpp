@@ -59,8 +59,9 @@ struct Slivers {
   }
 };
 
-// Both entries: `filled` given, cx is built here from it (after the passes in blocks when it is
-// large enough to cut); else cx is built and all its passes run on this thread.
+// Both entries. With `filled`, cx (empty) is built here from it, after the passes in blocks when
+// it is large enough to cut; without, cx comes built. Passes not made in blocks run here, on this
+// thread, over the whole mesh.
 OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec3>& X, const std::vector<char>& fixed,
                         const OptimizeOptions& opt, const std::function<bool(double)>& progress, int threads) {
   OptimizeCounts n;
