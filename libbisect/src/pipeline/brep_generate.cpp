@@ -8,7 +8,6 @@
 #include <cmath>
 #include <set>
 #include <string>
-#include <unordered_set>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"

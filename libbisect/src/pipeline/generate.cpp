@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
-#include <unordered_set>
 
 #include "bisect/brep_input.hpp"  // point_name
 #include "bisect/errors.hpp"
@@ -20,7 +19,6 @@
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
-#include "util/progress_poll.hpp"
 
 namespace bisect {
 namespace {
