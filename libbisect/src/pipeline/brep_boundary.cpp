@@ -38,6 +38,58 @@ BrepBoundary::BrepBoundary(const BrepInput& input, const BrepProxy& proxy, const
     if (e.degenerate && e.v0 >= 0) pole_[e.v0] = 1;
   node_on_.resize(model.nodes.size());
   for (std::size_t v = 0; v < model.nodes.size(); ++v) node_on_[v] = classify(static_cast<Index>(v));
+  // the chords a curve leaves by more than round-off, judged at their quarter points
+  bent_chords_.resize(in.faces.size());
+  for (std::size_t k = 0; k < in.faces.size(); ++k)
+    for (const auto& wire : in.faces[k].wires)
+      for (const BrepEdgeUse& use : wire) {
+        const BrepEdge& edge = in.edges[use.edge];
+        if (edge.degenerate || !edge.curve || static_cast<std::size_t>(use.edge) >= px.tess.edges.size()) continue;
+        const auto& chain = px.tess.edges[use.edge].nodes;
+        for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+          const Vec3 &a = model.nodes[chain[i]], &b = model.nodes[chain[i + 1]];
+          const double ta = chord_end_param(in, px, use.edge, static_cast<Index>(i), 0);
+          const double tb = chord_end_param(in, px, use.edge, static_cast<Index>(i), 1);
+          double off = 0;
+          for (double f : {0.25, 0.5, 0.75}) off = std::max(off, (edge.curve->point(ta + f * (tb - ta)) - (a + f * (b - a))).norm());
+          if (off > 1e-9 * (b - a).norm()) bent_chords_[k].push_back({use.edge, static_cast<Index>(i)});
+        }
+      }
+}
+
+Vec3 BrepBoundary::boundary_shift(Index k, const Vec3& p) const {
+  // each chord within its length of p moves p as the chord's point nearest p moves onto the
+  // curve; the chords are blended with weights (1 - (d / L)^2)^3 / (d^2 + (L / 1000)^2)^2, so
+  // that the nearest decides (a point just inside a chord moves as that chord does), and the
+  // whole fades as (1 - (d / L)^2)^3 with the nearest chord's d / L (brep_morph.hpp's form, over
+  // the face's own boundary)
+  Vec3 sum = Vec3::Zero();
+  double weights = 0, nearest = 1;
+  for (const auto& [e, i] : bent_chords_[k]) {
+    const auto& chain = px.tess.edges[e].nodes;
+    const Vec3 &a = model.nodes[chain[i]], &b = model.nodes[chain[i + 1]];
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    if (!(len2 > 0)) continue;
+    const double f = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+    const Vec3 foot = a + f * ab;
+    const double d2 = (p - foot).squaredNorm();
+    if (d2 >= len2) continue;
+    const double ta = chord_end_param(in, px, e, i, 0), tb = chord_end_param(in, px, e, i, 1);
+    const double r2 = d2 / len2, fade = (1 - r2) * (1 - r2) * (1 - r2), soft = d2 + 1e-6 * len2;
+    const double w = fade / (soft * soft);
+    sum += w * (in.edges[e].curve->point(ta + f * (tb - ta)) - foot);
+    weights += w;
+    nearest = std::min(nearest, r2);
+  }
+  if (!(weights > 0)) return Vec3::Zero();
+  return (1 - nearest) * (1 - nearest) * (1 - nearest) * sum / weights;
+}
+
+Vec3 BrepBoundary::cut_node_image(const PointOn& on, const Vec3& p) const {
+  if (on.kind != PointOn::kFace) return image(on, p);
+  const ParametricSurface& surf = *in.faces[on.id].surface;
+  return surf.point(surf.closest_point(p + boundary_shift(on.id, p), uv_on_proxy(on.proxy, p)));
 }
 
 bool BrepBoundary::on_chord(Index v, Index e, Index i, double* t) const {
@@ -172,7 +224,9 @@ void BrepBoundary::discretise_edges(const size::SizeField& h) {
   edge_nodes.clear();
   for (std::size_t v = 0; v < model.nodes.size(); ++v) {
     nodes.p.push_back(model.nodes[v]);
-    nodes.x.push_back(image(node_on_[v], model.nodes[v]));
+    // the tessellation's own nodes lie on the shape; the nodes the cuts made inside a face move
+    // with its boundary
+    nodes.x.push_back(v < px.tess.nodes.size() ? image(node_on_[v], model.nodes[v]) : cut_node_image(node_on_[v], model.nodes[v]));
     nodes.on.push_back(node_on_[v]);
   }
   for (const ModelFace& f : model.faces) {
@@ -234,7 +288,8 @@ void BrepBoundary::discretise_edges(const size::SizeField& h) {
           const double span = cum[j0 + 1] - cum[j0];
           const double s = (j0 + (span > 0 ? (target - cum[j0]) / span : 0.5)) / m;
           PointOn on;
-          const Vec3 x = point_at(s, &on);
+          const Vec3 x = along.kind == PointOn::kFace ? cut_node_image(along, pa + s * (pb - pa)) : point_at(s, &on);
+          if (along.kind == PointOn::kFace) on = along;
           nodes.p.push_back(pa + s * (pb - pa));
           nodes.x.push_back(x);
           nodes.on.push_back(on);

@@ -49,6 +49,17 @@ class BrepBoundary {
   Vec2 uv_on_proxy(Index s, const Vec3& p) const;
   // The true point of a proxy point p described by `on` (kInterior: p itself).
   Vec3 image(const PointOn& on, const Vec3& p) const;
+  // How far a point p on a proxy facet of B-rep face k moves with the face's own boundary: the
+  // proxy's chords of the face's curved edges against the true curves, blended over the chords
+  // within a chord's length of p (0 where there are none). See cut_node_image.
+  Vec3 boundary_shift(Index k, const Vec3& p) const;
+  // The true point of a node the cuts made inside a proxy face: the surface point nearest p moved
+  // with the face's boundary. Beside a hole the proxy's chords cut across the hole's arc, and the
+  // face's proxy facet holds a sliver the true face does not: a cut line leaving a vertex of
+  // the arc at a grazing angle runs through it (corpus/Kurbelwelle.brep: a node 0.002 inside a
+  // 3.5 mm bore, on the plane Face11, whose grid triangles then folded against the bore's). Moved
+  // as the chords move, it stays on the face's side of the arc.
+  Vec3 cut_node_image(const PointOn& on, const Vec3& p) const;
   // What the model edge (a, b) lies on: kEdge (along a chord of `id`), kFace (inside face `id`,
   // through proxy face `proxy`), or kInterior (a cut-cut edge).
   PointOn edge_on(Index a, Index b) const;
@@ -71,6 +82,8 @@ class BrepBoundary {
  private:
   std::vector<PointOn> node_on_;
   std::vector<char> pole_;  // per B-rep vertex: the vertex of a degenerate edge (a pole)
+  // per B-rep face: the proxy chords of its edges whose true curve leaves them (edge, chord)
+  std::vector<std::vector<std::array<Index, 2>>> bent_chords_;
   PointOn classify(Index v) const;
   bool on_chord(Index v, Index e, Index i, double* t) const;
 };

@@ -29,12 +29,6 @@ const std::map<std::string, std::string> kNotYet = {
     {"cube_filet.brep", "edges bound one face only, where the shell is open (Edge"},
     // the proxy's coarse facets cross at every proxy tried, named by their B-rep face
     {"Block.brep", "degrees (" + std::string(BISECT_SHARED_DIR) + "/models/corpus/Block.brep: Face478's tessellation folds: two of its facets intersect at ("},
-    // a fold that the optimisation and its refill leave on every proxy, caught before the
-    // assembly at both orders (the first proxy's message is raised). A failure past the fill
-    // tries the next proxy: x_problemSphere (a fold on its first) meshes on its second, Zylkopf on
-    // its fifth (the second round, without the walls' cap), Cone_1 on its second (CorpusCone
-    // below)
-    {"Kurbelwelle.brep", "came out inside out"},
     // a cell no fill takes: the true surface bulges past the cell's other faces
     {"wrenchnut.brep", "no point sees its whole boundary"},
 };
