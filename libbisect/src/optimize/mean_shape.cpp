@@ -9,6 +9,7 @@
 #include "optimize/node_stars.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "optimize/sliver_repair.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect::optimize {
 
@@ -114,72 +115,120 @@ bool flip32(tet::TetComplex& cx, Index t, Index a, Index b, Running& run) {
   return true;
 }
 
-// One pass of node moves: each free node up the gradient of its star's objective (forward
-// differences), the first of steps from a fifth of the star's size down that gains and keeps
-// the star's smallest key and the dihedral guard.
+// A free node's move up the gradient of its star's objective (forward differences): the first
+// of steps from a fifth of the star's size down that gains and keeps the star's smallest key and
+// the dihedral guard. Reads the positions of the star's nodes and writes only X[v], which it
+// leaves as it found it: nodes that share no tetrahedron are tried at once on several threads.
+struct Move {
+  bool made = false;
+  Vec3 to = Vec3::Zero();
+  double gain = 0;  // in the star's summed α̂
+};
+
+Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around) {
+  Move m;
+  double key = std::numeric_limits<double>::max(), scale = 0;
+  int count = 0;
+  for (Index t : around) {
+    key = std::min(key, cx.q[t]);
+    for (Index w : cx.tet[t])
+      if (w != node) scale += (X[w] - X[node]).norm(), ++count;
+  }
+  scale /= std::max(count, 1);
+  if (!(scale > 0)) return m;
+  const Vec3 old = X[node];
+  const StarScore before = star_score(X, cx.tet, around, node, old);
+  if (!std::isfinite(before.objective)) return m;
+  std::vector<double> was_cos(around.size());
+  for (std::size_t i = 0; i < around.size(); ++i) was_cos[i] = dihedral_cos(X, cx.tet[around[i]]);
+  const double h = 1e-4 * scale;
+  Vec3 g;
+  for (int k = 0; k < 3; ++k) {
+    Vec3 e = Vec3::Zero();
+    e[k] = h;
+    g[k] = (star_score(X, cx.tet, around, node, old + e).objective - before.objective) / h;
+  }
+  const double glen = g.norm();
+  if (!(glen > 0) || !std::isfinite(glen)) return m;
+  for (double s = 0.2 * scale; s > 1e-3 * scale; s *= 0.5) {
+    const Vec3 p = old + (s / glen) * g;
+    const StarScore after = star_score(X, cx.tet, around, node, p);
+    if (!(after.objective > before.objective + 1e-9 * std::abs(before.objective))) continue;
+    X[node] = p;
+    bool ok = true;
+    for (std::size_t i = 0; i < around.size() && ok; ++i) {
+      const Tet& u = cx.tet[around[i]];
+      ok = positive(X, u) && tet_angle_key(X, u) >= key && dihedral_cos(X, u) <= std::max(was_cos[i], kGuardCos);
+    }
+    X[node] = old;
+    if (!ok) continue;
+    m.made = true, m.to = p, m.gain = after.alpha_sum - before.alpha_sum;
+    break;
+  }
+  return m;
+}
+
+// One pass of node moves over the free nodes of the poor tetrahedra. The nodes are coloured
+// greedily in id order so that no two of a colour share a tetrahedron; colour by colour, each
+// node's move is tried on any thread (its star's tetrahedra and nodes are no other's of the
+// colour) and made in id order on this one. The moves depend on the colouring alone, so the
+// mesh is the same for every thread count (a serial sweep would let each node see every earlier
+// one's move; here it sees those of the earlier colours).
 std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const std::vector<char>& poor,
-                        Running& run) {
+                        Running& run, int threads) {
   std::vector<Index> at(X.size(), -1);  // a live poor tetrahedron at each free node
   for (std::size_t t = 0; t < poor.size(); ++t)
     if (cx.alive[t] && poor[t])
       for (Index v : cx.tet[t])
         // a node the sliver repair inserted has an id past `fixed`, and is free
         if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v]) at[v] = static_cast<Index>(t);
-  std::int64_t moves = 0;
-  for (std::size_t v = 0; v < X.size(); ++v) {
-    if (at[v] < 0) continue;
-    cx.poll(v);
-    const Index node = static_cast<Index>(v);
-    const std::vector<Index> around = star(cx, node, at[v]);
-    double key = std::numeric_limits<double>::max(), scale = 0;
-    int count = 0;
-    for (Index t : around) {
-      key = std::min(key, cx.q[t]);
+  std::vector<Index> nodes;
+  for (std::size_t v = 0; v < X.size(); ++v)
+    if (at[v] >= 0) nodes.push_back(static_cast<Index>(v));
+  const std::size_t n = nodes.size();
+  const int workers = util::thread_count(threads);
+  // the stars on this thread: the complex's walk marks what it has seen in the complex itself
+  std::vector<std::vector<Index>> stars(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    cx.poll(i);
+    stars[i] = star(cx, nodes[i], at[nodes[i]]);
+  }
+  // greedy colours: the least not taken by a node already coloured that shares a tetrahedron
+  std::vector<int> colour(X.size(), -1);
+  std::vector<std::vector<std::size_t>> by_colour;
+  std::vector<char> taken;
+  for (std::size_t i = 0; i < n; ++i) {
+    taken.assign(by_colour.size() + 1, 0);
+    for (Index t : stars[i])
       for (Index w : cx.tet[t])
-        if (w != node) scale += (X[w] - X[v]).norm(), ++count;
-    }
-    scale /= std::max(count, 1);
-    if (!(scale > 0)) continue;
-    const Vec3 old = X[v];
-    const StarScore before = star_score(X, cx.tet, around, node, old);
-    if (!std::isfinite(before.objective)) continue;
-    std::vector<double> was_cos(around.size());
-    for (std::size_t i = 0; i < around.size(); ++i) was_cos[i] = dihedral_cos(X, cx.tet[around[i]]);
-    const double h = 1e-4 * scale;
-    Vec3 g;
-    for (int k = 0; k < 3; ++k) {
-      Vec3 e = Vec3::Zero();
-      e[k] = h;
-      g[k] = (star_score(X, cx.tet, around, node, old + e).objective - before.objective) / h;
-    }
-    const double glen = g.norm();
-    if (!(glen > 0) || !std::isfinite(glen)) continue;
-    for (double s = 0.2 * scale; s > 1e-3 * scale; s *= 0.5) {
-      const Vec3 p = old + (s / glen) * g;
-      const StarScore after = star_score(X, cx.tet, around, node, p);
-      if (!(after.objective > before.objective + 1e-9 * std::abs(before.objective))) continue;
-      X[v] = p;
-      bool ok = true;
-      for (std::size_t i = 0; i < around.size() && ok; ++i) {
-        const Tet& u = cx.tet[around[i]];
-        ok = positive(X, u) && tet_angle_key(X, u) >= key && dihedral_cos(X, u) <= std::max(was_cos[i], kGuardCos);
-      }
-      if (!ok) {
-        X[v] = old;
-        continue;
-      }
-      cx.moved(around);
-      run.sum += after.alpha_sum - before.alpha_sum;
-      ++moves;
-      break;
-    }
+        if (colour[w] >= 0) taken[colour[w]] = 1;
+    const int c = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    colour[nodes[i]] = c;
+    if (c == static_cast<int>(by_colour.size())) by_colour.emplace_back();
+    by_colour[c].push_back(i);
+  }
+  std::int64_t moves = 0;
+  std::vector<Move> tried;
+  for (const std::vector<std::size_t>& group : by_colour) {
+    tried.assign(group.size(), Move{});
+    util::ordered_parallel(
+        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]]); },
+        [&](std::size_t k) {
+          const std::size_t i = group[k];
+          cx.poll(i);
+          if (!tried[k].made) return;
+          X[nodes[i]] = tried[k].to;
+          cx.moved(stars[i]);
+          run.sum += tried[k].gain;
+          ++moves;
+        });
   }
   return moves;
 }
 
 }  // namespace
 
-MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds) {
+MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads) {
   MeanCounts n;
   Running run;
   std::vector<char> poor(cx.tet.size(), 0);
@@ -210,7 +259,7 @@ MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
         if (flip32(cx, t, a, b, run)) ++flips;
       }
     }
-    const std::int64_t moves = move_nodes(cx, X, fixed, poor, run);
+    const std::int64_t moves = move_nodes(cx, X, fixed, poor, run, threads);
     n.flips += flips;
     n.moves += moves;
     if (flips == 0 && moves == 0) break;

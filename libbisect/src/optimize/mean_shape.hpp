@@ -24,9 +24,11 @@ struct MeanCounts {
 // α̂ rises by it (the new tetrahedra's α̂ summed, less the old ones', above the running mean
 // times the change in count) and the smallest key of the tetrahedra involved does not fall. A
 // free node moves up the gradient of its star's summed α̂ when every tetrahedron around it stays
-// positive and their smallest key does not fall. Tetrahedra and nodes in the order of their
-// ids, on one thread: the output is the same for the same input.
+// positive and their smallest key does not fall. The transformations in the order of the
+// tetrahedra's ids, on one thread; the node moves colour by colour (no two nodes of a colour
+// share a tetrahedron), each colour's on `threads` threads (0: one per core): the output is the
+// same for the same input, whatever the thread count.
 // fixed[v]: node v never moves; nodes past its end (inserted by the sliver repair) are free.
-MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds);
+MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads = 1);
 
 }  // namespace bisect::optimize

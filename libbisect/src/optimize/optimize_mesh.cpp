@@ -201,7 +201,7 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
   // at 10^5: 179 tetrahedra under 10 degrees for 8)
   at(kMeanStart);
   if (opt.mean_rounds > 0 && n.folds_left == 0) {
-    const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds);
+    const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds, threads);
     n.mean_changes = mean.flips + mean.moves;
   }
   n.times.mean = seconds_since(t0);
