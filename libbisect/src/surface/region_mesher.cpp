@@ -5,6 +5,8 @@
 #include <cmath>
 #include <deque>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
@@ -26,6 +28,13 @@ constexpr double kMinAngle = 30 * kPi / 180;
 constexpr double kShortEdge = 0.55;
 // A new node no nearer an existing one than this many sizes.
 constexpr double kNearest = 0.45;
+// A boundary segment shorter than kShortEdge sizes (a cut line ending just beside a vertex of the
+// face: flange at 10^5 had segments of 0.04 where the size is 0.17) would stand under a triangle
+// of 12 degrees, as the refinement leaves small triangles alone. The size is taken down to the
+// segment's length at its ends and grows from there by kShortGrowth per unit of distance, so
+// that the triangles beside it are shaped like it; no lower than kShortFloor sizes.
+constexpr double kShortGrowth = 1.0;
+constexpr double kShortFloor = 0.1;
 
 // T with |T du|^2 = du^T (J^T J) du: the surface's first fundamental form at uv, made definite
 // where it degenerates (a pole) by a small multiple of its trace.
@@ -57,6 +66,7 @@ class Mesher {
 
   RegionMesh run() {
     check();
+    find_short_segments();
     triangulate_boundary();
     refine();
     unfold();
@@ -77,6 +87,7 @@ class Mesher {
   std::vector<Vec3> xyz_;     // per triangulation point (the first three: the super triangle's, unused)
   std::vector<char> fixed_;   // boundary points
   std::size_t nb_ = 0;        // boundary nodes
+  std::vector<std::pair<Vec3, double>> short_ends_;  // find_short_segments
 
   Index tp(Index boundary_node) const { return boundary_node + 3; }
 
@@ -95,9 +106,23 @@ class Mesher {
   }
 
   double size_at(const Vec3& x) const {
-    const double h = o_.size(x);
+    double h = o_.size(x);
     if (!(h > 0) || !std::isfinite(h)) throw MeshingError("surface region: the size function gave " + std::to_string(h));
+    for (const auto& [p, length] : short_ends_) h = std::min(h, length + kShortGrowth * (x - p).norm());
     return h;
+  }
+
+  // the ends of the boundary's short segments, with the size there (see kShortGrowth)
+  void find_short_segments() {
+    for (const auto& loop : b_.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index a = loop[i], c = loop[(i + 1) % loop.size()];
+        const double length = (b_.xyz[c] - b_.xyz[a]).norm();
+        for (Index end : {a, c}) {
+          const double h = o_.size(b_.xyz[end]);
+          if (length < kShortEdge * h && length > 0) short_ends_.push_back({b_.xyz[end], std::max(length, kShortFloor * h)});
+        }
+      }
   }
 
   void triangulate_boundary() {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <algorithm>
 #include <map>
+#include <vector>
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
@@ -87,6 +88,37 @@ TEST(RegionMesher, SquareWithAHoleAtTheSize) {
   const double ideal = 0.96 / (std::sqrt(3.0) / 4 * 0.05 * 0.05);
   EXPECT_GT(m.tris.size(), 0.7 * ideal);
   EXPECT_LT(m.tris.size(), 1.4 * ideal);
+}
+
+// A boundary segment far shorter than the size (a cut line ending just beside a vertex of the
+// face): the triangle on it used to reach a size away, 6 degrees at its apex (flange at 10^5 had
+// such segments of 0.04 where the size is 0.17). The size falls to the segment's length beside
+// it and grows again from there.
+TEST(RegionMesher, AShortBoundarySegmentGetsTrianglesOfItsSize) {
+  const PlaneSurface plane(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY());
+  RegionBoundary b;
+  std::vector<Vec2> pts{{0, 0}, {0.2, 0}, {0.4, 0}, {0.49, 0}, {0.51, 0}, {0.6, 0}, {0.8, 0}};
+  for (int i = 0; i < 5; ++i) pts.push_back({1, 0.2 * i});
+  for (int i = 0; i < 5; ++i) pts.push_back({1 - 0.2 * i, 1});
+  for (int i = 0; i < 5; ++i) pts.push_back({0, 1 - 0.2 * i});
+  std::vector<Index> loop;
+  for (const Vec2& p : pts) {
+    loop.push_back(static_cast<Index>(b.uv.size()));
+    b.uv.push_back(p);
+    b.xyz.push_back(plane.point(p));
+  }
+  b.loops.push_back(loop);
+  RegionMeshOptions o;
+  o.size = [](const Vec3&) { return 0.2; };
+  const RegionMesh m = mesh_region(plane, b, o);
+  const Figures f = check(plane, b, m);
+  EXPECT_NEAR(f.uv_area, 1, 1e-12);
+  EXPECT_GT(f.min_angle, 20);
+  // the finer triangles stay beside the short segment: a fifth of the square's far from it
+  std::size_t near = 0;
+  for (const auto& t : m.tris)
+    if (((m.xyz[t[0]] + m.xyz[t[1]] + m.xyz[t[2]]) / 3 - Vec3(0.5, 0, 0)).norm() < 0.3) ++near;
+  EXPECT_LT(m.tris.size(), near + 0.8 / (std::sqrt(3.0) / 4 * 0.2 * 0.2) * 1.5);
 }
 
 TEST(RegionMesher, IsotropicOnASqueezedParametrisation) {
