@@ -7,18 +7,21 @@ namespace bisect::optimize {
 std::vector<Index> star(const tet::TetComplex& cx, Index v, Index t0, std::size_t limit) { return cx.star(v, t0, limit); }
 
 Vec3 neighbour_mean(const std::vector<Vec3>& X, const std::vector<Tet>& tets, const std::vector<Index>& around, Index v) {
+  // the star's other nodes, each once: a stamp per node, kept from call to call on each thread
+  // (smoothing asks for every node's mean; sorting the star's nodes to drop repeats was 3% of a
+  // run at 10^6). The sum goes in the order the nodes are met, as the sorted list's did not:
+  // the mean differs in its last bits, the same on every run and thread.
+  thread_local std::vector<unsigned> stamp;
+  thread_local unsigned now = 0;
+  if (stamp.size() < X.size()) stamp.resize(X.size(), 0);
+  if (++now == 0) std::fill(stamp.begin(), stamp.end(), 0u), now = 1;
   Vec3 sum = Vec3::Zero();
-  // the star's other nodes, each once (sorted: a star may be large); the list is kept from call
-  // to call on each thread (smoothing asks for every node's mean)
-  thread_local std::vector<Index> seen;
-  seen.clear();
+  std::size_t count = 0;
+  stamp[v] = now;
   for (Index t : around)
     for (Index w : tets[t])
-      if (w != v) seen.push_back(w);
-  std::sort(seen.begin(), seen.end());
-  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-  for (Index w : seen) sum += X[w];
-  return sum / static_cast<double>(std::max<std::size_t>(seen.size(), 1));
+      if (stamp[w] != now) stamp[w] = now, sum += X[w], ++count;
+  return sum / static_cast<double>(std::max<std::size_t>(count, 1));
 }
 
 std::vector<Index> below_key(const tet::TetComplex& cx, std::vector<Index> ids, double key) {

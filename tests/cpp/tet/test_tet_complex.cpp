@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <random>
 
+#include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
 #include "tet/tet_complex.hpp"
 #include "geom/predicates.hpp"
@@ -140,6 +141,66 @@ TEST(TetComplex, RandomInsertionsBothWaysStayValidAndImprove) {
     for (const Tet& t : cx.tets()) worst_after = std::min(worst_after, tet_angle_key(X, t));
     EXPECT_GE(worst_after, worst_before) << (delaunay ? "delaunay" : "minmax");
   }
+}
+
+// Each tetrahedron's neighbour across each face, named by node sets: the same complex built
+// afresh must give the same relation.
+std::vector<std::pair<Tet, Tet>> neighbour_relation(const TetComplex& cx) {
+  std::vector<std::pair<Tet, Tet>> out;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+    if (!cx.alive[t]) continue;
+    for (int f = 0; f < 4; ++f) {
+      const Index n = cx.nb[t][f];
+      Tet a = cx.tet[t], b{-1, -1, -1, -1};
+      if (n >= 0) b = cx.tet[n];
+      std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+      out.push_back({a, b});
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// replace() over a flip's few tetrahedra and over a node's whole star: both keep the adjacency a
+// fresh build gives, and both refuse a set that leaves a hole.
+TEST(TetComplex, ReplacementsSmallAndLargeKeepTheAdjacency) {
+  std::vector<Vec3> X = cube_nodes();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  for (int i = 0; i < 200; ++i) X.push_back({u(rng), u(rng), u(rng)});
+  TetComplex cx(X);
+  cx.build(cube_tets(X));
+  Index last = 0;
+  for (Index v = 8; v < static_cast<Index>(X.size()); ++v) last = cx.insert_delaunay(v, last).front();
+  EXPECT_GT(cx.improve_all(1000000), 0);  // flips: small replacements
+  // a node's whole star replaced by itself: a large one
+  std::vector<Index> star;
+  std::size_t most = 0;
+  for (Index v = 8; v < static_cast<Index>(X.size()); ++v) {
+    std::vector<Index> at = cx.tets_at(v);
+    if (at.size() > most) most = at.size(), star = at;
+  }
+  ASSERT_GT(star.size(), 12u);
+  std::vector<Tet> same;
+  for (Index t : star) same.push_back(cx.tet[t]);
+  cx.replace(star, same);
+  expect_consistent(cx);
+  TetComplex fresh(X);
+  fresh.build(cx.tets());
+  EXPECT_EQ(neighbour_relation(cx), neighbour_relation(fresh));
+  // a set that does not fill the space it replaces: two tetrahedra for one, and a star less one
+  {
+    const std::vector<Index> two{star[0], cx.nb[star[0]][0] >= 0 ? cx.nb[star[0]][0] : cx.nb[star[0]][1]};
+    EXPECT_THROW(cx.replace(two, {cx.tet[two[0]]}), MeshingError);
+  }
+  TetComplex again(X);
+  again.build(fresh.tets());
+  std::vector<Index> big;
+  for (std::size_t t = 0; t < again.tet.size(); ++t)
+    if (std::find(same.begin(), same.end(), again.tet[t]) != same.end()) big.push_back(static_cast<Index>(t));
+  ASSERT_EQ(big.size(), same.size());
+  std::vector<Tet> less(same.begin() + 1, same.end());
+  EXPECT_THROW(again.replace(big, less), MeshingError);
 }
 
 TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
