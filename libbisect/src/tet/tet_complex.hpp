@@ -204,6 +204,10 @@ class TetComplex {
   };
   std::vector<Outer> outer_;
   std::vector<Side> sides_;
+  struct Slot {
+    int first = -1, second = -1, more = 0;  // sides with one key: the first two, and how many after the first
+  };
+  std::vector<Slot> slots_;
   // the transformations' candidate tetrahedra and the ring they replace, kept the same way
   std::vector<Tet> fresh_;
   std::vector<Index> old_;
