@@ -320,8 +320,8 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     if (!fresh) continue;  // an old face no new tetrahedron took up
     if (s.second < 0 && new_boundary) continue;  // a new face of the outer boundary
     if (s.second < 0 || s.more > 1) {
-      // a third side can only be an old one with a new face twice, or more new faces: either way
-      // the new set does not meet the old boundary face for face
+      // a new face that meets nothing, or three sides on one triangle: the new set does not meet
+      // itself and the old set's outside face for face
       throw MeshingError("tetrahedral complex: a replacement does not fill the space it replaces");
     }
     const Side& b = sides[s.second];

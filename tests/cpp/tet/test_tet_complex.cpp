@@ -54,6 +54,15 @@ std::vector<Tet> cube_tets(const std::vector<Vec3>& X) {
   return t;
 }
 
+// The cube's corners and n random points inside it.
+std::vector<Vec3> random_cube_nodes(unsigned seed, int n) {
+  std::vector<Vec3> X = cube_nodes();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  for (int i = 0; i < n; ++i) X.push_back({u(rng), u(rng), u(rng)});
+  return X;
+}
+
 TEST(TetComplex, InsertInsideOnAFaceAndOnAnEdge) {
   std::vector<Vec3> X = cube_nodes();
   X.push_back({0.6, 0.3, 0.2});  // 8: inside one tetrahedron
@@ -116,10 +125,7 @@ TEST(TetComplex, DelaunayInsertionIsUndoneByReplacingWhatItMadeWithItsCavity) {
 
 TEST(TetComplex, RandomInsertionsBothWaysStayValidAndImprove) {
   for (bool delaunay : {false, true}) {
-    std::vector<Vec3> X = cube_nodes();
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(0.05, 0.95);
-    for (int i = 0; i < 300; ++i) X.push_back({u(rng), u(rng), u(rng)});
+    std::vector<Vec3> X = random_cube_nodes(7, 300);
     TetComplex cx(X);
     cx.build(cube_tets(X));
     Index last = 0;
@@ -164,10 +170,7 @@ std::vector<std::pair<Tet, Tet>> neighbour_relation(const TetComplex& cx) {
 // replace() over a flip's few tetrahedra and over a node's whole star: both keep the adjacency a
 // fresh build gives, and both refuse a set that leaves a hole.
 TEST(TetComplex, ReplacementsSmallAndLargeKeepTheAdjacency) {
-  std::vector<Vec3> X = cube_nodes();
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(0.05, 0.95);
-  for (int i = 0; i < 200; ++i) X.push_back({u(rng), u(rng), u(rng)});
+  std::vector<Vec3> X = random_cube_nodes(3, 200);
   TetComplex cx(X);
   cx.build(cube_tets(X));
   Index last = 0;
