@@ -45,8 +45,9 @@ struct FilledMesh {
 
 // The same from the fill's output: the transformation and smoothing passes in blocks on `threads`
 // threads (0: one per core) when the mesh is large enough to cut (block_pass.hpp), then cx
-// (empty, on X) is built from the result, and the rest as above; times.build and times.blocks
-// are filled. The mesh is the same for every thread count.
+// (empty, on X) is built from the result, and the rest as above, the mean shape's node moves on
+// the same threads (mean_shape.hpp); times.build and times.blocks are filled. The mesh is the
+// same for every thread count.
 OptimizeCounts optimize_filled(tet::TetComplex& cx, FilledMesh filled, std::vector<Vec3>& X, const std::vector<char>& fixed,
                                const OptimizeOptions& opt, const std::function<bool(double)>& progress = {}, int threads = 1);
 
