@@ -1,7 +1,7 @@
 // The passes for the mean shape (optimize/mean_shape.hpp): they raise the mean α̂, never lower a
 // smallest solid angle nor make a dihedral angle under 10.5 degrees, move no fixed node, give
-// the same mesh on every run and for every thread count; through the generator they raise the mean and keep the smallest
-// angle of an L prism and a cube.
+// the same mesh on every run and for every thread count; through the generator they raise the
+// mean and keep the smallest angle of an L prism and a cube.
 #include <gtest/gtest.h>
 
 #include <algorithm>
