@@ -48,13 +48,16 @@ BrepBoundary::BrepBoundary(const BrepInput& input, const BrepProxy& proxy, const
         const auto& chain = px.tess.edges[use.edge].nodes;
         for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
           const Vec3 &a = model.nodes[chain[i]], &b = model.nodes[chain[i + 1]];
-          const double ta = chord_end_param(in, px, use.edge, static_cast<Index>(i), 0);
-          const double tb = chord_end_param(in, px, use.edge, static_cast<Index>(i), 1);
           double off = 0;
-          for (double f : {0.25, 0.5, 0.75}) off = std::max(off, (edge.curve->point(ta + f * (tb - ta)) - (a + f * (b - a))).norm());
+          for (double f : {0.25, 0.5, 0.75}) off = std::max(off, (curve_along_chord(use.edge, static_cast<Index>(i), f) - (a + f * (b - a))).norm());
           if (off > 1e-9 * (b - a).norm()) bent_chords_[k].push_back({use.edge, static_cast<Index>(i)});
         }
       }
+}
+
+Vec3 BrepBoundary::curve_along_chord(Index e, Index i, double f) const {
+  const double ta = chord_end_param(in, px, e, i, 0), tb = chord_end_param(in, px, e, i, 1);
+  return in.edges[e].curve->point(ta + f * (tb - ta));
 }
 
 Vec3 BrepBoundary::boundary_shift(Index k, const Vec3& p) const {
@@ -75,10 +78,9 @@ Vec3 BrepBoundary::boundary_shift(Index k, const Vec3& p) const {
     const Vec3 foot = a + f * ab;
     const double d2 = (p - foot).squaredNorm();
     if (d2 >= len2) continue;
-    const double ta = chord_end_param(in, px, e, i, 0), tb = chord_end_param(in, px, e, i, 1);
     const double r2 = d2 / len2, fade = (1 - r2) * (1 - r2) * (1 - r2), soft = d2 + 1e-6 * len2;
     const double w = fade / (soft * soft);
-    sum += w * (in.edges[e].curve->point(ta + f * (tb - ta)) - foot);
+    sum += w * (curve_along_chord(e, i, f) - foot);
     weights += w;
     nearest = std::min(nearest, r2);
   }

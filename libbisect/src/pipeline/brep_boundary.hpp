@@ -86,6 +86,8 @@ class BrepBoundary {
   std::vector<std::vector<std::array<Index, 2>>> bent_chords_;
   PointOn classify(Index v) const;
   bool on_chord(Index v, Index e, Index i, double* t) const;
+  // the point of edge e's curve at the parameter a fraction f along chord i's (as on_chord maps)
+  Vec3 curve_along_chord(Index e, Index i, double f) const;
 };
 
 }  // namespace bisect::pipeline

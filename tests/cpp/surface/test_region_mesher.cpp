@@ -18,6 +18,17 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The loop through pts (in (u, v), in order) appended to b, with their surface points.
+void add_loop(const ParametricSurface& s, RegionBoundary& b, const std::vector<Vec2>& pts) {
+  std::vector<Index> loop;
+  for (const Vec2& p : pts) {
+    loop.push_back(static_cast<Index>(b.uv.size()));
+    b.uv.push_back(p);
+    b.xyz.push_back(s.point(p));
+  }
+  b.loops.push_back(loop);
+}
+
 // A loop round the rectangle [u0, u1] x [v0, v1] in (u, v), n nodes per side, counter-clockwise
 // (or clockwise for a hole), appended to b.
 void rectangle(const ParametricSurface& s, RegionBoundary& b, Vec2 lo, Vec2 hi, int n, bool hole = false) {
@@ -27,13 +38,7 @@ void rectangle(const ParametricSurface& s, RegionBoundary& b, Vec2 lo, Vec2 hi, 
   for (int i = 0; i < n; ++i) pts.push_back({hi.x() - (hi.x() - lo.x()) * i / n, hi.y()});
   for (int i = 0; i < n; ++i) pts.push_back({lo.x(), hi.y() - (hi.y() - lo.y()) * i / n});
   if (hole) std::reverse(pts.begin(), pts.end());
-  std::vector<Index> loop;
-  for (const Vec2& p : pts) {
-    loop.push_back(static_cast<Index>(b.uv.size()));
-    b.uv.push_back(p);
-    b.xyz.push_back(s.point(p));
-  }
-  b.loops.push_back(loop);
+  add_loop(s, b, pts);
 }
 
 struct Figures {
@@ -101,13 +106,7 @@ TEST(RegionMesher, AShortBoundarySegmentGetsTrianglesOfItsSize) {
   for (int i = 0; i < 5; ++i) pts.push_back({1, 0.2 * i});
   for (int i = 0; i < 5; ++i) pts.push_back({1 - 0.2 * i, 1});
   for (int i = 0; i < 5; ++i) pts.push_back({0, 1 - 0.2 * i});
-  std::vector<Index> loop;
-  for (const Vec2& p : pts) {
-    loop.push_back(static_cast<Index>(b.uv.size()));
-    b.uv.push_back(p);
-    b.xyz.push_back(plane.point(p));
-  }
-  b.loops.push_back(loop);
+  add_loop(plane, b, pts);
   RegionMeshOptions o;
   o.size = [](const Vec3&) { return 0.2; };
   const RegionMesh m = mesh_region(plane, b, o);
