@@ -17,7 +17,16 @@ struct Triangle {
   Vec3 a, b, c;
   Vec3 outward;  // unit normal out of the material (zero: an interface triangle, either way)
   Index face;
+  bool folded;   // its corners turn against its surface's normal: no rays start from it
 };
+
+// The unit normal of a face's surface at a tessellation triangle's centre in (u, v), along
+// du x dv; zero where the tessellation has no (u, v) or the surface has no normal there.
+Vec3 surface_normal_at(const BrepFace& face, const BrepTessellation::Face& tf, std::size_t t) {
+  if (!face.surface || t >= tf.uv.size()) return Vec3::Zero();
+  const Vec3 n = face.surface->normal((tf.uv[t][0] + tf.uv[t][1] + tf.uv[t][2]) / 3);
+  return n.allFinite() ? n : Vec3::Zero();
+}
 
 // A bounding-volume tree over triangles, for the nearest hit along a ray.
 class RayTree {
@@ -137,11 +146,20 @@ std::vector<WallSample> wall_thickness(const BrepInput& in, const BrepTessellati
   for (std::size_t f = 0; f < in.faces.size(); ++f) {
     first[f] = tris.size();
     if (f >= tess.faces.size() || users[f] == 0) continue;
-    for (const auto& t : tess.faces[f].tris) {
-      Triangle tri{tess.nodes[t[0]], tess.nodes[t[1]], tess.nodes[t[2]], Vec3::Zero(), static_cast<Index>(f)};
-      const Vec3 n = (tri.b - tri.a).cross(tri.c - tri.a);  // along du x dv: the corners turn counter-clockwise in (u, v)
+    const BrepTessellation::Face& tf = tess.faces[f];
+    for (std::size_t k = 0; k < tf.tris.size(); ++k) {
+      const auto& t = tf.tris[k];
+      Triangle tri{tess.nodes[t[0]], tess.nodes[t[1]], tess.nodes[t[2]], Vec3::Zero(), static_cast<Index>(f), false};
+      Vec3 n = (tri.b - tri.a).cross(tri.c - tri.a);  // along du x dv: the corners turn counter-clockwise in (u, v)
       if (!(n.norm() > 0)) continue;
-      if (users[f] == 1) tri.outward = (in.faces[f].reversed ? -1.0 : 1.0) * n.normalized();
+      n.normalize();
+      // A sliver of the tessellation along a curved edge can turn over in space (corpus
+      // Zylkopf, toroid Face7: facets whose normal points into the material). A ray from it
+      // would start outwards and meet its neighbours a few thousandths away, a wall that is not
+      // there. Such a facet sends no ray, and faces out of the material by its surface's normal.
+      const Vec3 ns = surface_normal_at(in.faces[f], tf, k);
+      if (ns.dot(n) < 0) tri.folded = true, n = ns;
+      if (users[f] == 1) tri.outward = (in.faces[f].reversed ? -1.0 : 1.0) * n;
       tris.push_back(tri);
     }
   }
@@ -173,6 +191,7 @@ std::vector<WallSample> wall_thickness(const BrepInput& in, const BrepTessellati
     near[f] = 0;
     for (std::size_t k = first[f]; k < first[f + 1]; ++k) {
       const Triangle& t = tris[k];
+      if (t.folded) continue;
       const Vec3 n = (t.b - t.a).cross(t.c - t.a).normalized();
       // the inward directions: one for a face of one solid, both for an interface
       std::vector<Vec3> inward;

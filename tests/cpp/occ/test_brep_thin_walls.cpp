@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 
@@ -61,6 +62,24 @@ TEST(WallThickness, PlateAndTubeWalls) {
       EXPECT_LT(s.thickness, 1.1);
     }
   }
+}
+
+// Corpus Zylkopf's tessellation turns slivers over along the curved edges of its toroid Face7
+// (their corners turn against the torus's normal). Rays from them went out of the material and
+// met the next facet a few thousandths away: "walls down to 0.00121 thick" sized the whole part
+// (74,174 tetrahedra at 2*10^4). Its walls are no thinner than a tenth; the tessellation is the
+// first proxy's (5% of the diagonal, 60 degrees).
+TEST(WallThickness, TurnedOverFacetsAreNoWalls) {
+  const std::string path = std::string(BISECT_SHARED_DIR) + "/models/corpus/Zylkopf.brep";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing";
+  const BrepInput in = load_brep_file(path);
+  const double diag = (in.bbox_max - in.bbox_min).norm();
+  const std::vector<size::WallSample> w = size::wall_thickness(in, in.tessellate(0.05 * diag, M_PI / 3), 1.0);
+  double thinnest = 1e300;
+  Vec3 where = Vec3::Zero();
+  for (const size::WallSample& s : w)
+    if (s.thickness < thinnest) thinnest = s.thickness, where = s.p;
+  EXPECT_GT(thinnest, 0.1) << "at (" << where.transpose() << ")";
 }
 
 struct Meshed {
