@@ -106,8 +106,8 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
     n.times.blocks = seconds_since(t0);
     t0 = Clock::now();
     if (blocks.blocks > 0) at(kBlocksEnd);
-    cx.build(std::move(filled->tets), std::move(filled->tags));
-    cx.constrain(filled->held);
+    cx.build(std::move(filled->tets), std::move(filled->tags), threads);
+    cx.constrain(filled->held, threads);
     cx.surface_tag = std::move(filled->surface_tag);
     cx.boundary_flips = opt.boundary_flips;
     n.times.build = seconds_since(t0);

@@ -91,14 +91,15 @@ class TetComplex {
   void poll(std::size_t step) const;  // throws Cancelled when cancelled() says so (every kPollEvery steps)
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
-  // default to 0.
-  void build(std::vector<Tet> tets, std::vector<Index> tags = {});
+  // default to 0. The quality keys and the face pairing run on `threads` (0: every core); the
+  // complex is the same for any count.
+  void build(std::vector<Tet> tets, std::vector<Index> tags = {}, int threads = 1);
   // The live tetrahedra, and their tags in the same order.
   std::vector<Tet> tets() const;
   std::vector<Index> tags() const;
   // Marks these faces (of the current tetrahedra) as constrained; faces not in the complex are
   // ignored.
-  void constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces);
+  void constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces, int threads = 1);
   void refresh_quality();  // after the nodes moved (smoothing)
   void moved(const std::vector<Index>& tets);  // after some tetrahedra's nodes moved
   // the same with their keys (tet_angle_key) already known: keys[i] is tets[i]'s

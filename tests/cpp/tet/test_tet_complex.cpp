@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <random>
+#include <unordered_set>
 
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
@@ -61,6 +62,13 @@ std::vector<Vec3> random_cube_nodes(unsigned seed, int n) {
   std::uniform_real_distribution<double> u(0.05, 0.95);
   for (int i = 0; i < n; ++i) X.push_back({u(rng), u(rng), u(rng)});
   return X;
+}
+
+// The cube's six tetrahedra with every other node of X inserted by Delaunay insertion.
+void insert_the_rest(TetComplex& cx) {
+  cx.build(cube_tets(cx.X));
+  Index last = 0;
+  for (Index v = 8; v < static_cast<Index>(cx.X.size()); ++v) last = cx.insert_delaunay(v, last).front();
 }
 
 TEST(TetComplex, InsertInsideOnAFaceAndOnAnEdge) {
@@ -172,9 +180,7 @@ std::vector<std::pair<Tet, Tet>> neighbour_relation(const TetComplex& cx) {
 TEST(TetComplex, ReplacementsSmallAndLargeKeepTheAdjacency) {
   std::vector<Vec3> X = random_cube_nodes(3, 200);
   TetComplex cx(X);
-  cx.build(cube_tets(X));
-  Index last = 0;
-  for (Index v = 8; v < static_cast<Index>(X.size()); ++v) last = cx.insert_delaunay(v, last).front();
+  insert_the_rest(cx);
   EXPECT_GT(cx.improve_all(1000000), 0);  // flips: small replacements
   // a node's whole star replaced by itself: a large one
   std::vector<Index> star;
@@ -204,6 +210,39 @@ TEST(TetComplex, ReplacementsSmallAndLargeKeepTheAdjacency) {
   ASSERT_EQ(big.size(), same.size());
   std::vector<Tet> less(same.begin() + 1, same.end());
   EXPECT_THROW(again.replace(big, less), MeshingError);
+}
+
+// build() and constrain() run in chunks on the threads (more than one chunk of tetrahedra and of
+// nodes here): the neighbours, the quality keys and the constrained faces are the same for any
+// thread count, slot for slot.
+TEST(TetComplex, TheSameComplexIsBuiltOnAnyNumberOfThreads) {
+  std::vector<Vec3> X = random_cube_nodes(11, 20000);
+  TetComplex made(X);
+  insert_the_rest(made);
+  const std::vector<Tet> tets = made.tets();
+  ASSERT_GT(tets.size(), 100000u);
+  std::unordered_set<FaceKey, FaceKeyHash> held;  // every face of every seventh tetrahedron
+  for (std::size_t t = 0; t < tets.size(); t += 7)
+    for (int f = 0; f < 4; ++f) held.insert(face_key(tets[t][(f + 1) % 4], tets[t][(f + 2) % 4], tets[t][(f + 3) % 4]));
+  TetComplex one(X);
+  one.build(tets, {}, 1);
+  one.constrain(held, 1);
+  expect_consistent(one);
+  for (int threads : {2, 4}) {
+    TetComplex many(X);
+    many.build(tets, {}, threads);
+    many.constrain(held, threads);
+    EXPECT_EQ(many.nb, one.nb) << threads << " threads";
+    EXPECT_EQ(many.q, one.q) << threads << " threads";
+    std::size_t differ = 0, constrained = 0;
+    for (std::size_t t = 0; t < tets.size(); ++t)
+      for (int f = 0; f < 4; ++f) {
+        differ += many.is_constrained(static_cast<Index>(t), f) != one.is_constrained(static_cast<Index>(t), f);
+        constrained += one.is_constrained(static_cast<Index>(t), f);
+      }
+    EXPECT_EQ(differ, 0u) << threads << " threads";
+    EXPECT_GT(constrained, tets.size() / 2);
+  }
 }
 
 TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
