@@ -91,8 +91,8 @@ class TetComplex {
   void poll(std::size_t step) const;  // throws Cancelled when cancelled() says so (every kPollEvery steps)
 
   // Builds the adjacency of a fresh set of tetrahedra (faces matched by their nodes); tags
-  // default to 0. The quality keys and the face pairing run on `threads` (0: every core); the
-  // complex is the same for any count.
+  // default to 0. The quality keys, the sort of the faces and their pairing run on `threads`
+  // (0: every core); the complex is the same for any count.
   void build(std::vector<Tet> tets, std::vector<Index> tags = {}, int threads = 1);
   // The live tetrahedra, and their tags in the same order.
   std::vector<Tet> tets() const;
