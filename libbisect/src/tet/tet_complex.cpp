@@ -16,6 +16,7 @@ namespace bisect::tet {
 
 namespace {
 constexpr std::size_t kChunk = 32768;  // tetrahedra per chunk of build() and constrain() on the threads
+constexpr std::size_t kSortParts = 4;  // at most this many parts in build()'s counting sort
 }  // namespace
 
 void TetComplex::poll(std::size_t step) const {
@@ -67,8 +68,10 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   // each part of the tetrahedra counts its own faces per node and writes them from its own
   // offsets (the scatter is a quarter of a second at 10^6 on one thread, bound by memory);
   // within a run the faces lie in tetrahedron order for any number of parts, and are sorted
-  // below anyway.
-  const std::size_t parts = static_cast<std::size_t>(std::max(1, util::thread_count(threads)));
+  // below anyway. Each part keeps a count per node, so the parts are at most kSortParts: on a
+  // machine of many cores one per thread would cost as much memory as the complex itself (64
+  // parts at 5*10^6 tetrahedra: 230 MB), for a scatter that memory bounds anyway.
+  const std::size_t parts = std::min<std::size_t>(kSortParts, static_cast<std::size_t>(std::max(1, util::thread_count(threads))));
   const std::size_t per_part = std::max<std::size_t>(1, (tet.size() + parts - 1) / parts);
   const std::size_t n_parts = (tet.size() + per_part - 1) / per_part;
   std::vector<std::vector<Index>> at(n_parts, std::vector<Index>(static_cast<std::size_t>(nodes) + 1, 0));
