@@ -17,6 +17,8 @@ namespace bisect::tet {
 namespace {
 constexpr std::size_t kChunk = 32768;  // tetrahedra per chunk of build() and constrain() on the threads
 constexpr std::size_t kSortParts = 4;  // at most this many parts in build()'s counting sort
+// the step poll() always asks the cancel hook at: between the chunked steps, on this thread
+constexpr std::size_t kPollNow = TetComplex::kPollEvery - 1;
 }  // namespace
 
 void TetComplex::poll(std::size_t step) const {
@@ -46,7 +48,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   // the keys (10^6 tetrahedra: 0.06 s on one thread), and below the pairing, in chunks on the
   // threads: each writes its own slots. The cancel hook is polled between the steps only, on
   // this thread (the optimiser's progress callback is not for other threads).
-  poll(kPollEvery - 1);
+  poll(kPollNow);
   util::parallel_chunks(tet.size(), threads, kChunk, [&](std::size_t from, std::size_t to) {
     for (std::size_t t = from; t < to; ++t) q[t] = tet_angle_key(X, tet[t]);
   });
@@ -83,7 +85,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
         ++count[static_cast<std::size_t>(std::min({fv[0], fv[1], fv[2]}))];
       }
   });
-  poll(kPollEvery - 1);
+  poll(kPollNow);
   // first[v]: where node v's run starts; at[p][v]: where part p writes its first face of v
   std::vector<Index> first(static_cast<std::size_t>(nodes) + 1, 0);
   for (std::size_t v = 0; v < static_cast<std::size_t>(nodes); ++v) {
@@ -107,7 +109,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   });
   // each node's faces on their own: a face is paired within its smallest node's run, so every
   // slot of nb is written by one node's run alone
-  poll(kPollEvery - 1);
+  poll(kPollNow);
   util::parallel_chunks(static_cast<std::size_t>(nodes), threads, kChunk / 8, [&](std::size_t from_node, std::size_t to_node) {
     for (std::size_t v = from_node; v < to_node; ++v) {
       const auto from = half.begin() + first[v], to = half.begin() + first[v + 1];
@@ -142,7 +144,7 @@ void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces
   for (const FaceKey& k : faces)
     for (Index v : {k.a, k.b, k.c})
       if (v >= 0 && static_cast<std::size_t>(v) < on.size()) on[v] = 1;
-  poll(kPollEvery - 1);
+  poll(kPollNow);
   // the set is only read, and each tetrahedron's mask is its own
   util::parallel_chunks(tet.size(), threads, kChunk, [&](std::size_t from, std::size_t to) {
     for (std::size_t t = from; t < to; ++t)
