@@ -104,6 +104,11 @@ struct DecomposeOptions {
                                            // no larger than near_vertex_rel: not used
   double short_edge_rel = 0.05;  // reject chords shorter than this times the shortest edge of
                                  // the face they cross
+  // Reject a chord that meets the edges of the face it crosses (at its ends) under this angle,
+  // on cut faces and on faces that are no facet of a curved surface (curved_faces); 0: off, as
+  // in the thesis. A piece of face between the chord and that edge has a corner of that angle,
+  // and no grid of it can have larger angles: the B-rep route asks for 20 degrees on its surface.
+  double min_face_corner_deg = 0;
   double reflex_tol_deg = 1e-3;  // an edge is reflex when its angle exceeds 180 + this
   int max_candidates = 7;        // planes per edge (6.4.1), at least 10 degrees apart (besides the
                                  // planes through a vertex at a nearly flat edge, plane_selection.hpp)
@@ -132,6 +137,8 @@ struct DecomposeStats {
   std::size_t deferred = 0;                       // reflex edges put back on the list (6.7 (3)-(4))
   bool narrow_margin_retry = false;  // decomposed again with near_vertex_rel only, after the
                                      // wider margin's cuts led to a region no plane resolved
+  bool face_corner_retry = false;    // decomposed again without min_face_corner_deg, after its
+                                     // cuts led to a region no plane resolved
   double prepare_seconds = 0, bisect_seconds = 0;
 };
 

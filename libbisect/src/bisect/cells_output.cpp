@@ -64,6 +64,7 @@ std::string decompose_stats_json(const DecomposeStats& s) {
   o << ", \"rejected_planes\": ";
   dict(s.rejected);
   o << ", \"deferred_edges\": " << s.deferred << ", \"narrow_margin_retry\": " << (s.narrow_margin_retry ? "true" : "false")
+    << ", \"face_corner_retry\": " << (s.face_corner_retry ? "true" : "false")
     << ", \"times\": {\"init_geom\": " << s.prepare_seconds
     << ", \"bisect\": " << s.bisect_seconds << "}}";
   return o.str();

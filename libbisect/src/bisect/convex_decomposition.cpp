@@ -111,8 +111,8 @@ CutOutcome try_method(PolyhedralModel& m, Index r, const CutPlane& pl, Index a, 
 DecomposeOptions relaxed(const DecomposeOptions& opt, int level) {
   DecomposeOptions o = opt;
   if (level < 0) o.near_vertex_rel = std::max(o.near_vertex_rel, o.preferred_near_vertex_rel);
-  if (level >= 1) o.near_vertex_rel /= 4, o.short_edge_rel /= 4, o.min_angle_deg /= 2;
-  if (level >= 2) o.near_vertex_rel = 1e-6, o.short_edge_rel = 1e-6, o.min_angle_deg = 0.2;
+  if (level >= 1) o.near_vertex_rel /= 4, o.short_edge_rel /= 4, o.min_angle_deg /= 2, o.min_face_corner_deg /= 2;
+  if (level >= 2) o.near_vertex_rel = 1e-6, o.short_edge_rel = 1e-6, o.min_angle_deg = 0.2, o.min_face_corner_deg = 0;
   return o;
 }
 
@@ -322,13 +322,11 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
   return d;
 }
 
-}  // namespace
-
 // The wider vertex margin changes which cuts are made, and a different sequence of cuts can leave
 // a region that no plane resolves where the thesis's margin alone would not (2 of 1,000 random
 // CSG solids, against 1). Such an input is decomposed again from the start with the thesis's
 // margin only, so that the wider margin never costs a mesh.
-Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
+Decomposition decompose_margins(PolyhedralModel model, const DecomposeOptions& opt) {
   if (!opt.widens_margin()) return decompose_once(std::move(model), opt);
   const auto t0 = Clock::now();
   try {
@@ -336,6 +334,26 @@ Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
   } catch (const MeshingError&) {
     Decomposition d = decompose_once(std::move(model), opt.thesis_margin_only());
     d.stats.narrow_margin_retry = true;
+    d.stats.bisect_seconds = since(t0);
+    return d;
+  }
+}
+
+}  // namespace
+
+// The face corner limit, like the wider margin, changes the sequence of cuts, and a sequence can
+// end in a region no plane resolves (corpus Kurbelwelle, Zylkopf and x_ring did at 2*10^4): the
+// input is decomposed again without it, so that the limit never costs a mesh either.
+Decomposition decompose(PolyhedralModel model, const DecomposeOptions& opt) {
+  if (!(opt.min_face_corner_deg > 0)) return decompose_margins(std::move(model), opt);
+  const auto t0 = Clock::now();
+  try {
+    return decompose_margins(model, opt);
+  } catch (const MeshingError&) {
+    DecomposeOptions o = opt;
+    o.min_face_corner_deg = 0;
+    Decomposition d = decompose_margins(std::move(model), o);
+    d.stats.face_corner_retry = true;
     d.stats.bisect_seconds = since(t0);
     return d;
   }

@@ -65,6 +65,26 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
     return std::move(res);
   };
   const double min_angle = opt.min_angle_deg * M_PI / 180.0;
+  const double min_corner = opt.min_face_corner_deg * M_PI / 180.0;
+  // The smallest angle that a chord leaving P in direction d makes with the edges of face f at P
+  // (the edge P lies on, or the two edges at the vertex P is). Not on a facet of a curved surface
+  // (curved_faces): the true face runs on across its edges, and the grid only sees cut lines there.
+  auto chord_corner = [&](Index f, const SectionPoint& P, const Vec3& d) {
+    const Index s = m.faces[f].source;
+    if (s != kCutFace && static_cast<std::size_t>(s) < opt.curved_faces.size() && opt.curved_faces[s]) return M_PI;
+    auto angle = [&](const Vec3& e) { return std::acos(std::clamp(d.dot(e) / (d.norm() * e.norm()), -1.0, 1.0)); };
+    if (P.vertex < 0) {
+      const double a = angle(m.nodes[P.eb] - m.nodes[P.ea]);
+      return std::min(a, M_PI - a);
+    }
+    double best = M_PI;
+    for (const auto& loop : m.faces[f].loops)
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        if (loop[i] == P.vertex)
+          for (const Index w : {loop[(i + 1) % loop.size()], loop[(i + loop.size() - 1) % loop.size()]})
+            best = std::min(best, angle(m.nodes[w] - P.p));
+    return best;
+  };
   const double tol_on = 1e-10 * m.size;  // keeps cut faces planar to well within 1e-9
   const std::vector<Index> F = m.live_faces(r);
   auto& info = res.info;
@@ -131,6 +151,8 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
       if (P.vertex >= 0 && Q.vertex >= 0 && on_edges.count(edge_key(P.vertex, Q.vertex))) continue;
       if (!point_in_loops(ff.to2d(0.5 * (P.p + Q.p)), l2)) continue;
       const char* flaw = face_flaw ? face_flaw : ((P.p - Q.p).norm() < opt.short_edge_rel * face_min ? "short_edge" : nullptr);
+      if (!flaw && min_corner > 0 && (chord_corner(f, P, Q.p - P.p) < min_corner || chord_corner(f, Q, P.p - Q.p) < min_corner))
+        flaw = "acute_face_corner";
       for (int s = 0; s < 2; ++s) {
         if (side != 2 && side != s) continue;
         const Vec3 inward = s == 0 ? face.normal : Vec3(-face.normal);

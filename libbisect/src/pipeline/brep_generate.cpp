@@ -171,6 +171,11 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
     // through them (the thesis's tolerance is a thousandth of a degree) leave slivers at the pole.
     // A cell a degree short of convex is still seen whole from inside.
     dopt.reflex_tol_deg = std::max(dopt.reflex_tol_deg, 1.0);
+    // No cut may leave a corner under 25 degrees in a flat face or a cut face (DecomposeOptions::
+    // min_face_corner_deg): the face grids are to have no angle under 20. Flange at 10^5 had a
+    // piece of its top face 12.6 degrees wide at a corner (two cut lines from one point), and its
+    // surface grid 12.6 degrees there.
+    dopt.min_face_corner_deg = std::max(dopt.min_face_corner_deg, 25.0);
     dopt.curved_faces.assign(out.proxy.face_tri.size(), 0);
     for (std::size_t f = 0; f < out.proxy.face_tri.size(); ++f) dopt.curved_faces[f] = out.proxy.face_tri[f] >= 0;
     try {

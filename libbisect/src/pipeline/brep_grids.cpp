@@ -1,9 +1,11 @@
 #include "pipeline/brep_grids.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <string>
 
 #include "bisect/errors.hpp"
@@ -309,11 +311,25 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
   // a piece at a pole is meshed over a plane: its (u, v) draws straight segments bent round the
   // pole; any piece whose (u, v) polygon the mesher cannot use gets the same second chance
   const bool at_pole = rb.uv.size() > local.size();
+  // Two triangles on the same three nodes fold the grid onto itself: a piece round a cone's apex
+  // (corpus Cone_1) is a disc in space but, meshed in (u, v), a strip between two copies of the
+  // seam, and a triangle from each copy to the same two nodes across the strip is the same
+  // triangle in space. Such a grid is not used either.
+  auto checked = [&](surface::RegionMesh r) {
+    std::set<std::array<Index, 3>> seen;
+    for (const auto& t : r.tris) {
+      std::array<Index, 3> key;
+      for (int k = 0; k < 3; ++k) key[k] = t[k] < static_cast<Index>(out.global.size()) ? out.global[t[k]] : -1 - t[k];
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) throw MeshingError("two of its triangles join the same three nodes (the grid folds onto itself)");
+    }
+    return r;
+  };
   try {
-    rm = at_pole ? surface::mesh_region_projected(surf, rb, ro) : surface::mesh_region(surf, rb, ro);
+    rm = checked(at_pole ? surface::mesh_region_projected(surf, rb, ro) : surface::mesh_region(surf, rb, ro));
   } catch (const MeshingError& first) {
     try {
-      rm = at_pole ? surface::mesh_region(surf, rb, ro) : surface::mesh_region_projected(surf, rb, ro);
+      rm = checked(at_pole ? surface::mesh_region(surf, rb, ro) : surface::mesh_region_projected(surf, rb, ro));
     } catch (const MeshingError& second) {
       try {
         return mesh_piece_on_facets(bd, job, h, cancelled);

@@ -2,6 +2,7 @@
 // thesis's examples and on the STL models.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -147,6 +148,36 @@ TEST(Decompose, WiderVertexMarginKeepsCutEdgesLong) {
   EXPECT_LT(2 * cell_edges_under(wide, 0.8 * chord), cell_edges_under(narrow, 0.8 * chord));
 }
 
+// The smallest corner of the cells' faces (a vertex where a face runs straight on is no corner).
+double smallest_face_corner_deg(const Decomposition& d) {
+  double best = 180;
+  for (const ConvexCell& c : d.cells)
+    for (Index f : c.faces)
+      for (const auto& loop : d.model.faces[f].loops)
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          const Vec3 p = d.model.nodes[loop[i]];
+          const Vec3 a = d.model.nodes[loop[(i + loop.size() - 1) % loop.size()]] - p, b = d.model.nodes[loop[(i + 1) % loop.size()]] - p;
+          const double deg = std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0)) * 180 / M_PI;
+          if (deg < 179.999) best = std::min(best, deg);
+        }
+  return best;
+}
+
+// A prism whose reflex edge (at (4, 2)) has a face extension (y = 2) that meets the slanted
+// bottom side 12 degrees from it: the thesis's limits take that plane and leave a 12-degree
+// corner in the top and bottom faces; min_face_corner_deg (the B-rep route's 25) takes another.
+TEST(Decompose, FaceCornerLimitKeepsSmallCornersOutOfTheFaces) {
+  const PolyInput in = poly(test::prism({{-6, 3}, {8, 0}, {8, 2}, {4, 2}, {4, 5}, {-6, 5}}));
+  DecomposeOptions limited;
+  limited.min_face_corner_deg = 25;
+  const Decomposition thesis = decompose(in), kept = decompose(in, limited);
+  test::expect_valid_cells(thesis, summarize(in).volume);
+  test::expect_valid_cells(kept, summarize(in).volume);
+  EXPECT_LT(smallest_face_corner_deg(thesis), 15);  // measured: 12.1
+  EXPECT_GE(smallest_face_corner_deg(kept), 25);    // measured: 77.9, the input's own smallest
+  EXPECT_FALSE(kept.stats.face_corner_retry);
+}
+
 TEST(Decompose, CancelStopsTheWork) {
   DecomposeOptions opt;
   opt.progress = [](double) { return false; };
@@ -157,7 +188,7 @@ TEST(Decompose, StatsJsonNamesTheFigures) {
   const Decomposition d = decompose(poly(test::l_prism()));
   const std::string j = decompose_stats_json(d.stats);
   for (const char* key : {"\"convex_cells\": 2", "\"bisections\"", "\"cut_face\": 1", "\"rejected_planes\"",
-                          "\"narrow_margin_retry\": false", "\"init_geom\"", "\"bisect\""})
+                          "\"narrow_margin_retry\": false", "\"face_corner_retry\": false", "\"init_geom\"", "\"bisect\""})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
 }
 

@@ -7,6 +7,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -36,6 +37,8 @@ TopoDS_Shape make_touching_compound() {
   b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(4, 0, 0), 1, 1, 1).Shape());
   return c;
 }
+
+TopoDS_Shape make_cone() { return BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 100, 0, 300, 2 * M_PI).Shape(); }
 
 TopoDS_Shape make_cylinder() { return BRepPrimAPI_MakeCylinder(1, 2).Shape(); }
 

@@ -11,6 +11,9 @@ namespace bisect::test {
 TopoDS_Shape make_box();
 // radius 1, height 2 on the z axis: a lateral face with a seam edge, two discs; volume 2 pi
 TopoDS_Shape make_cylinder();
+// radius 100 at z = 0 to the apex at (0, 0, 300), as FreeCAD's Part.makeCone(100, 0, 300) makes
+// it: a conical face with a seam and a degenerate edge at the apex, a disc; volume pi * 10^6
+TopoDS_Shape make_cone();
 // radius 2 at the origin: one face, one seam edge and two degenerate pole edges; volume 32 pi / 3
 TopoDS_Shape make_sphere();
 // the box [0,4] x [0,4] x [0,2] minus a cylinder of radius 1 through it on (2, 2, z): volume 32 - 2 pi

@@ -119,8 +119,9 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
               chordal / want, worst, st.total);
 
   // issue 16's volume quality at 10^5: mean alpha at least 0.255, no dihedral angle under 10
-  // degrees. Three models fall short, named with the bounds they keep (measured: part.step 2.17
-  // degrees and 32 tetrahedra under 10, Angled.step 2.43 and 12, flange 8.17 and 1); only part
+  // degrees. Two models fall short, named with the bounds they keep (measured: part.step 2.17
+  // degrees and 32 tetrahedra under 10, Angled.step 4.41 and 13; flange had 8.17 and 1 before no
+  // cut left a corner under 25 degrees in a flat face, and has 10.20 and none); only part
   // of part.step's is the B-rep's own sharper feature
   if (R == 100000) {
     EXPECT_GE(q.alpha.mean, 0.255) << model;
@@ -132,21 +133,23 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
       EXPECT_GE(q.dihedral_min.min, 2.0) << model;
       EXPECT_LE(under_10, 40) << model;
     } else if (model == "models/cad/Angled.step") {
-      // all 12 within 3.4 mm (two spacings) of where the small cylinder Face4 cuts the large
+      // (13; of the 12 before the face corner limit, not located again since) all 12 within
+      // 3.4 mm (two spacings) of where the small cylinder Face4 cuts the large
       // cylinder Face39 (along the B-spline Edge12 and its twin), caps and slivers of boundary
       // nodes, which neither moves nor an inserted node lift: the mesher's, not the CAD's (the two
       // faces meet there at 81 to 99 degrees)
       EXPECT_GE(q.dihedral_min.min, 2.0) << model;
       EXPECT_LE(under_10, 14) << model;
-    } else if (model == "models/flange.brep") {
-      // one sliver inside, its four nodes on the boundary beside the 90 degree edge between the
-      // top face (Face2) and the rim (Face1, a cylinder): two on each face, so no node move and
-      // no flip mends it; the mesher's
-      EXPECT_GE(q.dihedral_min.min, 8.0) << model;
-      EXPECT_LE(under_10, 1) << model;
     } else {
       EXPECT_GE(q.dihedral_min.min, 10.0) << model;
     }
+    // issue 16's surface angle, 20 degrees, but where the B-rep has sharper corners of its own
+    // (part.step, Angled.step) and on sphere-in-box (9.7: its sphere's proxy facets are cut
+    // along their edges, and a piece between such an edge and a cut line beside it is a few
+    // degrees wide at a corner). Flange's 12.6 (two cut lines from one point of its top face) has
+    // been 22.8 since no cut leaves a corner under 25 degrees in a flat face.
+    if (model != "models/cad/part.step" && model != "models/cad/Angled.step" && model != "models/sphere-in-box.brep")
+      EXPECT_GE(st.surface_min_angle, 20.0) << model;
   }
 }
 
