@@ -121,7 +121,9 @@ TEST(LaplaceSmoothing, ImprovesAPerturbedGridWithoutInverting) {
   expect_valid(m, area);
   EXPECT_GE(min_angle_deg(m), before);
   for (std::size_t v = 0; v < m.nodes.size(); ++v)
-    if (m.fixed[v]) EXPECT_EQ(m.nodes[v], grid(20, 0.4, 4).nodes[v]);
+    if (m.fixed[v]) {
+      EXPECT_EQ(m.nodes[v], grid(20, 0.4, 4).nodes[v]);
+    }
 }
 
 TEST(LaplaceSmoothing, ConcaveRegionAndHoleStayValid) {

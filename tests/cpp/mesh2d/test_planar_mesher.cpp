@@ -101,7 +101,9 @@ TEST(PlanarMesher, LShapesHolesAndACoastline) {
     EXPECT_NEAR(static_cast<double>(m.tris.size()), static_cast<double>(in.required_elements), 0.15 * in.required_elements);
     RecordProperty("min_angle", std::to_string(st.min_angle_deg));
     // the coastline has input corners sharper than 20 degrees; the others none
-    if (text_ptr != &coastline) EXPECT_GE(st.min_angle_deg, 20.0) << text.substr(0, 20);
+    if (text_ptr != &coastline) {
+      EXPECT_GE(st.min_angle_deg, 20.0) << text.substr(0, 20);
+    }
   }
 }
 

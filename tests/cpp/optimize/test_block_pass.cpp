@@ -110,7 +110,9 @@ TEST(BlockPass, TheSameValidMeshForEveryThreadCountWithHeldFacesAndFixedNodesKep
     EXPECT_TRUE(validate(m).empty());
     EXPECT_NEAR(volume(X, tets), 1.0, 1e-9);
     for (std::size_t v = 0; v < X.size(); ++v)
-      if (c.cube.fixed[v]) EXPECT_EQ(X[v], c.cube.X[v]) << "fixed node " << v;
+      if (c.cube.fixed[v]) {
+        EXPECT_EQ(X[v], c.cube.X[v]) << "fixed node " << v;
+      }
     std::vector<tet::FaceKey> faces = faces_of(tets);
     FaceSet present(faces.begin(), faces.end());
     for (const tet::FaceKey& k : c.held) EXPECT_TRUE(present.count(k)) << "held face " << k.a << " " << k.b << " " << k.c;

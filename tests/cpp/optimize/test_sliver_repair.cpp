@@ -89,7 +89,9 @@ TEST(SliverRepair, TwoFreeNodesTooCloseBecomeOne) {
   for (std::size_t v = 0; v < 8; ++v) EXPECT_EQ(g.X[v], start[v]) << v;
   // the keys the complex keeps are the tetrahedra's own
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
-    if (cx.alive[t]) EXPECT_DOUBLE_EQ(cx.q[t], tet::tet_angle_key(g.X, cx.tet[t]));
+    if (cx.alive[t]) {
+      EXPECT_DOUBLE_EQ(cx.q[t], tet::tet_angle_key(g.X, cx.tet[t]));
+    }
 }
 
 }  // namespace
