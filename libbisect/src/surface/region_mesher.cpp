@@ -26,8 +26,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kLongEdge = 1.35;
 constexpr double kMinAngle = 30 * kPi / 180;
 constexpr double kShortEdge = 0.55;
-// A new node no nearer an existing one than this many sizes.
+// A new node no nearer an existing one than this many sizes, nor nearer a boundary segment
+// round the triangle it falls in than kNearSegment sizes (of the size or the segment's length).
 constexpr double kNearest = 0.45;
+constexpr double kNearSegment = 0.1;
 // A boundary segment shorter than kShortEdge sizes (a cut line ending just beside a vertex of the
 // face: flange at 10^5 had segments of 0.04 where the size is 0.17) would stand under a triangle
 // of 12 degrees, as the refinement leaves small triangles alone. The size is taken down to the
@@ -219,13 +221,21 @@ class Mesher {
       bool near = false;
       const UvTri& A = tr_.tris[at];
       for (int k = 0; k < 3 && !near; ++k) near = (xyz_[A.v[k]] - x).norm() < kNearest * hx;
-      for (int k = 0; k < 3 && !near; ++k) {
-        if (!(A.held >> k & 1u)) continue;
-        // nearer a boundary segment than a third of a size: it would make a needle there
-        const Vec3 &p = xyz_[A.v[(k + 1) % 3]], &q = xyz_[A.v[(k + 2) % 3]];
+      // nearer a boundary segment of the located triangle than a third of a size: it would make
+      // a needle there. Nearer one round its corners than kNearSegment sizes: a node came 10^-3
+      // sizes off such a segment, which was not the located triangle's (corpus x_rod, a 0.14
+      // degree triangle that no swap may mend, the segment being held)
+      auto off = [&](const UvTri& U, int k) {
+        const Vec3 &p = xyz_[U.v[(k + 1) % 3]], &q = xyz_[U.v[(k + 2) % 3]];
         const double f = std::clamp((x - p).dot(q - p) / std::max((q - p).squaredNorm(), 1e-300), 0.0, 1.0);
-        near = (p + f * (q - p) - x).norm() < 0.35 * std::max(hx, (q - p).norm());
-      }
+        return (p + f * (q - p) - x).norm() / std::max(hx, (q - p).norm());
+      };
+      for (int k = 0; k < 3 && !near; ++k) near = (A.held >> k & 1u) && off(A, k) < 0.35;
+      for (int c = 0; c < 3 && !near; ++c)
+        for (Index u : tr_.fan(A.v[c])) {
+          for (int k = 0; k < 3 && !near; ++k) near = (tr_.tris[u].held >> k & 1u) && off(tr_.tris[u], k) < kNearSegment;
+          if (near) break;
+        }
       if (near) continue;
       tr_.uv.push_back(c);
       xyz_.push_back(x);
