@@ -120,7 +120,7 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
 
   // issue 16's volume quality at 10^5: mean alpha at least 0.255, no dihedral angle under 10
   // degrees. Two models fall short, named with the bounds they keep (measured: part.step 2.17
-  // degrees and 32 tetrahedra under 10, Angled.step 4.41 and 13; flange had 8.17 and 1 before no
+  // degrees and 32 tetrahedra under 10, Angled.step 3.77 and 14; flange had 8.17 and 1 before no
   // cut left a corner under 25 degrees in a flat face, and has 10.20 and none); only part
   // of part.step's is the B-rep's own sharper feature
   if (R == 100000) {
@@ -133,7 +133,7 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
       EXPECT_GE(q.dihedral_min.min, 2.0) << model;
       EXPECT_LE(under_10, 40) << model;
     } else if (model == "models/cad/Angled.step") {
-      // (13; of the 12 before the face corner limit, not located again since) all 12 within
+      // (14; of the 12 before the face corner limit, not located again since) all 12 within
       // 3.4 mm (two spacings) of where the small cylinder Face4 cuts the large
       // cylinder Face39 (along the B-spline Edge12 and its twin), caps and slivers of boundary
       // nodes, which neither moves nor an inserted node lift: the mesher's, not the CAD's (the two
