@@ -128,6 +128,10 @@ struct GenerateStats {
   // (its message, naming the place): why a run took two or three times its usual time
   std::int64_t proxy_attempts = 0;
   std::string proxy_retry_reason;
+  // B-rep route: the decomposition that meshed was made again without its face corner limit (no
+  // cut leaving a corner under 25 degrees in a flat face), whose cuts had ended in a region no
+  // plane resolved (DecomposeOptions::min_face_corner_deg)
+  bool face_corner_retry = false;
   // seconds: preparation, decomposition, node placement with face grids, cell filling,
   // optimisation with smoothing, all
   double init_geom = 0, bisect = 0, gen_nodes = 0, gen_tets = 0, optimize = 0, total = 0;

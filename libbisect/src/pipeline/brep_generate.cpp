@@ -318,6 +318,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     st.init_geom = dc.d.stats.prepare_seconds;
     st.bisect = since(t_dec) - st.init_geom;
     st.convex_cells = static_cast<std::int64_t>(dc.d.cells.size());
+    st.face_corner_retry = dc.d.stats.face_corner_retry;
     st.regions = static_cast<std::int64_t>(in.solids.size());
     double volume = 0;
     for (const ConvexCell& c : dc.d.cells) volume += pipeline::cell_polytope(dc.d.model, c).volume();

@@ -176,7 +176,7 @@ TEST(Cli, MeshesTheThesisCubesIntoTetrahedra) {
   EXPECT_NE(r.out.find("tetrahedra"), std::string::npos) << r.out;
   const std::string s = slurp(stats);
   for (const char* key : {"\"nodes\"", "\"tets\"", "\"regions\": 2", "\"convex_cells\"", "\"init_geom\"", "\"bisect\"", "\"gen_nodes\"",
-                          "\"gen_tets\"", "\"optimize\"", "\"optimize_blocks\": 0", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
+                          "\"gen_tets\"", "\"optimize\"", "\"optimize_blocks\": 0", "\"face_corner_retry\": false", "\"total\"", "\"dihedral_min\"", "\"alpha_mean\"", "\"pct_dihedral_below_10\""})
     EXPECT_NE(s.find(key), std::string::npos) << key << " in " << s;
   // where the optimisation's time went: seven parts, none negative, together within its time
   const auto number_after = [&](const std::string& from, const char* key) {
