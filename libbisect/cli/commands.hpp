@@ -40,6 +40,7 @@ struct MeshOptions {
   int threads = 0;            // --threads N (0: one per core)
   int order = 1;              // --order 1|2
   bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
+  bool face_moves = true;       // --no-face-moves: false
   double grading = 0;         // --grading G (0: uniform interior spacing)
   // the B-rep size field (SizeOptions): --min-size, --max-size, --curvature-elements,
   // --chord-deviation, --size-grading; brep_sizing lists the flags given, so that a polyhedral

@@ -54,6 +54,8 @@ const char* kUsage =
     "  --slivers N     rounds of node moves on tetrahedra under 10 degrees (default 8)\n"
     "  --mean-shape N  rounds of transformations and node moves for the mean alpha after\n"
     "                  those, keeping every smallest angle (default 2)\n"
+    "  --no-face-moves  in those rounds, keep the nodes inside flat input faces where the\n"
+    "                  face grids put them (by default they may move in the face's plane)\n"
     "  --threads N     threads for the face grids, the cells' nodes and fillings and the\n"
     "                  optimisation (default 0: one per core); the mesh is the same for\n"
     "                  every N\n"
@@ -207,6 +209,8 @@ int main(int argc, char** argv) {
       mesh.brep_sizing.push_back(a);
     } else if (a == "--boundary-flips") {
       mesh.boundary_flips = true;
+    } else if (a == "--no-face-moves") {
+      mesh.face_moves = false;
     } else if (a == "--order") {
       std::string v;
       if (!value(&v) || (v != "1" && v != "2")) return usage_error(a + " needs 1 or 2");

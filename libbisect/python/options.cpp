@@ -85,6 +85,7 @@ py::dict default_options() {
   d["mean_shape"] = o.optimize.mean_rounds;
   d["grading"] = o.sizing.grading;
   d["boundary_flips"] = o.optimize.boundary_flips;
+  d["face_moves"] = o.optimize.face_moves;
   d["threads"] = o.threads;
   d["merge_coplanar"] = o.merge_coplanar;
   d["insertion"] = o.delaunay_insertion ? "delaunay" : "minmax";
@@ -114,6 +115,7 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "mean_shape") o.optimize.mean_rounds = static_cast<int>(integer(value, "mean_shape", 0, 100));
     else if (k == "grading") o.sizing.grading = number(value, "grading");
     else if (k == "boundary_flips") o.optimize.boundary_flips = flag(value, "boundary_flips");
+    else if (k == "face_moves") o.optimize.face_moves = flag(value, "face_moves");
     else if (k == "threads") o.threads = static_cast<int>(integer(value, "threads", 0, 1024));
     else if (k == "merge_coplanar") o.merge_coplanar = flag(value, "merge_coplanar");
     else if (k == "insertion") {

@@ -120,7 +120,7 @@ class MeshShapeArgumentsTest(unittest.TestCase, RefusalTable):
             rows += [(name, -1, ValueError), (name, 10 ** 6, ValueError),
                      (name, 1.5, TypeError), (name, NAN, TypeError), (name, "3", TypeError)]
         rows += [("size_grading", v, ValueError) for v in (0, -1, NAN, INF)]
-        rows += [("size_grading", "x", TypeError), ("boundary_flips", 1, TypeError),
+        rows += [("size_grading", "x", TypeError), ("boundary_flips", 1, TypeError), ("face_moves", 1, TypeError),
                  ("insertion", "random", ValueError),
                  ("regions", "Face1", TypeError), ("regions", [5], TypeError, "regions[0]"),
                  ("regions", [{"size": 0, "faces": [1]}], ValueError, "regions[0]"),

@@ -111,7 +111,7 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
     options      min_size, max_size, curvature_elements (elements per full turn, default 12),
                  chord_deviation, size_grading, regions ([{"size": mm, "faces": [...], "edges":
                  [...], "vertices": [...], "solids": [...]}], FreeCAD's numbers from 1 or names
-                 such as "Face3"), optimize, smooth, slivers, mean_shape, insertion,
+                 such as "Face3"), optimize, smooth, slivers, mean_shape, face_moves, insertion,
                  max_elements (the tetrahedra thin walls may make before the mesh is refused;
                  default what half of the memory holds): see
                  ``bisectmesh.core().default_options()`` and the README

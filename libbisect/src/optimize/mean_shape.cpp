@@ -125,7 +125,32 @@ struct Move {
   double gain = 0;  // in the star's summed α̂
 };
 
-Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around) {
+// The smallest angle (degrees) of the triangles round `node` in the plane through it normal to
+// `normal`: the star's faces at the node whose other two nodes lie in that plane (its boundary
+// triangles there); 180 when there is none.
+double smallest_in_plane_angle(const tet::TetComplex& cx, const std::vector<Vec3>& X, Index node, const std::vector<Index>& around,
+                               const Vec3& normal, double tolerance) {
+  double worst = 180;
+  for (Index t : around) {
+    const Tet& u = cx.tet[t];
+    Index other[3];
+    int k = 0;
+    for (Index w : u)
+      if (w != node) other[k++] = w;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j) {
+        const Index a = other[i], b = other[j];
+        if (std::abs(normal.dot(X[a] - X[node])) > tolerance || std::abs(normal.dot(X[b] - X[node])) > tolerance) continue;
+        worst = std::min(worst, triangle_min_angle(X[node], X[a], X[b]) * 180 / 3.14159265358979323846);
+      }
+  }
+  return worst;
+}
+
+// Where a node that slides in its face may not take its boundary triangles' smallest angle.
+constexpr double kSlideAngleFloorDeg = 30;
+
+Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around, const Vec3* normal) {
   Move m;
   double key = std::numeric_limits<double>::max(), scale = 0;
   int count = 0;
@@ -140,13 +165,21 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
   const StarScore before = star_score(X, cx.tet, around, node, old);
   if (!std::isfinite(before.objective)) return m;
   std::vector<double> was_cos(around.size());
-  for (std::size_t i = 0; i < around.size(); ++i) was_cos[i] = dihedral_cos(X, cx.tet[around[i]]);
+  double star_cos = -1;  // the star's smallest dihedral angle, as a cosine
+  for (std::size_t i = 0; i < around.size(); ++i) was_cos[i] = dihedral_cos(X, cx.tet[around[i]]), star_cos = std::max(star_cos, was_cos[i]);
   const double h = 1e-4 * scale;
   Vec3 g;
   for (int k = 0; k < 3; ++k) {
     Vec3 e = Vec3::Zero();
     e[k] = h;
     g[k] = (star_score(X, cx.tet, around, node, old + e).objective - before.objective) / h;
+  }
+  // in the face's plane: exactly zero along an axis the plane is normal to
+  double angle_floor = 0, tolerance = 0;
+  if (normal) {
+    g -= *normal * normal->dot(g);
+    tolerance = 1e-9 * scale;
+    angle_floor = std::min(smallest_in_plane_angle(cx, X, node, around, *normal, tolerance), kSlideAngleFloorDeg);
   }
   const double glen = g.norm();
   if (!(glen > 0) || !std::isfinite(glen)) return m;
@@ -158,8 +191,10 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
     bool ok = true;
     for (std::size_t i = 0; i < around.size() && ok; ++i) {
       const Tet& u = cx.tet[around[i]];
-      ok = positive(X, u) && tet_angle_key(X, u) >= key && dihedral_cos(X, u) <= std::max(was_cos[i], kGuardCos);
+      // a node in a face: no smaller dihedral angle in its star than there was
+      ok = positive(X, u) && tet_angle_key(X, u) >= key && dihedral_cos(X, u) <= (normal ? star_cos : std::max(was_cos[i], kGuardCos));
     }
+    if (ok && normal) ok = smallest_in_plane_angle(cx, X, node, around, *normal, tolerance) >= angle_floor;
     X[node] = old;
     if (!ok) continue;
     m.made = true, m.to = p, m.gain = after.alpha_sum - before.alpha_sum;
@@ -174,14 +209,19 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
 // colour) and made in id order on this one. The moves depend on the colouring alone, so the
 // mesh is the same for every thread count (a serial sweep would let each node see every earlier
 // one's move; here it sees those of the earlier colours).
-std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const std::vector<char>& poor,
-                        Running& run, int threads) {
-  std::vector<Index> at(X.size(), -1);  // a live poor tetrahedron at each free node
+std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const std::vector<Vec3>& slide,
+                        const std::vector<char>& poor, Running& run, int threads) {
+  // the plane a fixed node slides in, or none
+  const auto plane_of = [&](Index v) -> const Vec3* {
+    const auto i = static_cast<std::size_t>(v);
+    return i < fixed.size() && fixed[i] && i < slide.size() && slide[i] != Vec3::Zero() ? &slide[i] : nullptr;
+  };
+  std::vector<Index> at(X.size(), -1);  // a live poor tetrahedron at each node that may move
   for (std::size_t t = 0; t < poor.size(); ++t)
     if (cx.alive[t] && poor[t])
       for (Index v : cx.tet[t])
         // a node the sliver repair inserted has an id past `fixed`, and is free
-        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v]) at[v] = static_cast<Index>(t);
+        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v] || plane_of(v)) at[v] = static_cast<Index>(t);
   std::vector<Index> nodes;
   for (std::size_t v = 0; v < X.size(); ++v)
     if (at[v] >= 0) nodes.push_back(static_cast<Index>(v));
@@ -212,7 +252,7 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
   for (const std::vector<std::size_t>& group : by_colour) {
     tried.assign(group.size(), Move{});
     util::ordered_parallel(
-        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]]); },
+        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]], plane_of(nodes[group[k]])); },
         [&](std::size_t k) {
           const std::size_t i = group[k];
           cx.poll(i);
@@ -228,7 +268,19 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
 
 }  // namespace
 
-MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads) {
+Vec3 slide_normal(const Vec3& n) {
+  if (!(std::abs(n.norm() - 1) < 1e-6)) return Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::abs(n[k]) - 1) < 1e-14) {
+      Vec3 axis = Vec3::Zero();
+      axis[k] = n[k] < 0 ? -1 : 1;
+      return axis;
+    }
+  return n;
+}
+
+MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads,
+                        const std::vector<Vec3>& slide) {
   MeanCounts n;
   Running run;
   std::vector<char> poor(cx.tet.size(), 0);
@@ -259,7 +311,7 @@ MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
         if (flip32(cx, t, a, b, run)) ++flips;
       }
     }
-    const std::int64_t moves = move_nodes(cx, X, fixed, poor, run, threads);
+    const std::int64_t moves = move_nodes(cx, X, fixed, slide, poor, run, threads);
     n.flips += flips;
     n.moves += moves;
     if (flips == 0 && moves == 0) break;

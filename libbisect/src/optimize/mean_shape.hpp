@@ -1,6 +1,6 @@
 // The mean shape after the min-max passes. Those stop once the worst tetrahedron around every
 // face, edge and node can rise no more, and leave the others as they came; at coarse counts most
-// tetrahedra touch the boundary, whose nodes never move, and the mean α̂ (inradius /
+// tetrahedra touch the boundary, whose nodes those passes never move, and the mean α̂ (inradius /
 // circumradius, thesis 8.3.1) stays at what the fill gave. These passes raise it without
 // giving up what the min-max passes and the sliver repair won: no change lowers the smallest key
 // (tet_angle_key) of the tetrahedra it touches, nor makes a dihedral angle under 10.5 degrees.
@@ -29,6 +29,20 @@ struct MeanCounts {
 // share a tetrahedron), each colour's on `threads` threads (0: one per core): the output is the
 // same for the same input, whatever the thread count.
 // fixed[v]: node v never moves; nodes past its end (inserted by the sliver repair) are free.
-MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads = 1);
+// slide[v], when given and not zero: the unit normal of the flat input face that node v lies
+// inside (not on its edges), in whose plane it may move although fixed. At coarse counts most
+// nodes are on the boundary (two-boxes-cavity.brep at R = 1000: 272 of 330), and the grids on
+// the two sides of a thin wall, made one face at a time, do not line up; moving them in their
+// planes lets the tetrahedra between them take better shapes. Such a move also keeps the
+// smallest angle of the node's boundary triangles (or 30 degrees, whichever is less) and the
+// smallest dihedral angle of its star; a move in a plane normal to an axis leaves that
+// coordinate exactly as it was.
+// A face's unit normal as `slide` holds it: one within round-off of an axis made exactly that
+// axis (so that a move in the plane leaves that coordinate as it was); zero when n is not a
+// unit vector.
+Vec3 slide_normal(const Vec3& n);
+
+MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads = 1,
+                        const std::vector<Vec3>& slide = {});
 
 }  // namespace bisect::optimize

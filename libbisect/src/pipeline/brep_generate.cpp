@@ -12,6 +12,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "optimize/inverted_refill.hpp"
+#include "optimize/mean_shape.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/brep_bodies.hpp"
 #include "pipeline/brep_boundary.hpp"
@@ -197,6 +198,37 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
   }
 }
 
+// Per grid node: the unit normal of the flat B-rep face it lies inside (zero for a node on an
+// edge or vertex, or on a curved face), as optimize::slide_normal makes it.
+std::vector<Vec3> flat_face_normals(const BrepInput& in, const pipeline::BoundaryNodes& nodes) {
+  std::vector<Vec3> normal(nodes.on.size(), Vec3::Zero());
+  std::vector<Vec3> of_face(in.faces.size(), Vec3::Zero());
+  for (std::size_t f = 0; f < in.faces.size(); ++f) {
+    if (!in.faces[f].planar || !in.faces[f].surface) continue;
+    const ParametricSurface& surf = *in.faces[f].surface;
+    of_face[f] = optimize::slide_normal(surf.normal(0.5 * (surf.uv_min() + surf.uv_max())));
+  }
+  for (std::size_t v = 0; v < nodes.on.size(); ++v)
+    if (nodes.on[v].kind == pipeline::PointOn::kFace) normal[v] = of_face[nodes.on[v].id];
+  return normal;
+}
+
+// After the optimisation: the (u, v) of every corner whose node slid in its flat face, from its
+// new position (the order-2 mid-nodes are placed from them), and the grids' own copy of it.
+void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pipeline::BrepPlacement* best) {
+  for (pipeline::FacePiece& piece : best->grids.pieces) {
+    if (!in.faces[piece.face].planar) continue;
+    const ParametricSurface& surf = *in.faces[piece.face].surface;
+    for (std::size_t k = 0; k < piece.tris.size(); ++k)
+      for (int i = 0; i < 3; ++i) {
+        const Index v = piece.tris[k][i];
+        if (static_cast<std::size_t>(v) >= before.size() || best->X[v] == before[v]) continue;
+        piece.tri_uv[k][i] = surf.closest_point(best->X[v], piece.tri_uv[k][i]);
+        best->grids.nodes.x[v] = best->X[v];
+      }
+  }
+}
+
 // The global optimisation (7.5 over the whole mesh) and the output's assembly, checked: a
 // tetrahedron inside out is a MeshingError naming the place, never a mesh.
 TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, pipeline::BrepPlacement* best, pipeline::FilledCells& filled,
@@ -210,12 +242,15 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
   const auto t_opt = Clock::now();
   tet::TetComplex cx(best->X);
-  optimize::FilledMesh mesh{std::move(filled.tets), std::move(filled.region), {}, {}};
+  optimize::FilledMesh mesh{std::move(filled.tets), std::move(filled.region), {}, {}, {}};
   for (const pipeline::FacePiece& piece : best->grids.pieces)
     for (const auto& t : piece.tris) {
       mesh.held.insert(tet::face_key(t[0], t[1], t[2]));
       if (piece.cell_in < 0) mesh.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
     }
+  // nodes inside a flat B-rep face may move in its plane in the passes for the mean shape
+  mesh.slide = flat_face_normals(in, best->grids.nodes);
+  const std::vector<Vec3> before(best->X.begin(), best->X.begin() + static_cast<std::ptrdiff_t>(mesh.slide.size()));
   // the surface grid is the true surface's: it stays as meshed (no 2-2 transformation)
   OptimizeOptions oo = opt.optimize;
   oo.boundary_flips = false;
@@ -223,6 +258,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   if (progress) optimize_progress = [&](double x) { return progress(kBar.filled + (kBar.optimized - kBar.filled) * x); };
   const optimize::OptimizeCounts oc =
       optimize::optimize_filled(cx, std::move(mesh), best->X, best->on_boundary, oo, optimize_progress, opt.threads);
+  follow_slid_nodes(in, before, best);
   st->optimize_parts = oc.times;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;

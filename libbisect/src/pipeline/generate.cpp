@@ -16,6 +16,7 @@
 #include "domain/merge_facets.hpp"
 #include "geom/recentre.hpp"
 #include "optimize/inverted_refill.hpp"
+#include "optimize/mean_shape.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
@@ -25,6 +26,28 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Per node: the unit normal of the input face it lies inside, for the node moves within it
+// (optimize/mean_shape.hpp), when the grids of that input face alone hold it (cut faces aside:
+// gone once the cells are filled); zero for a node on an input edge or vertex, between two input
+// faces, or inside.
+std::vector<Vec3> one_face_normals(const PolyhedralModel& m, const pipeline::Built& b) {
+  constexpr Index kNone = -1, kMany = -2;
+  std::vector<Index> source(b.X.size(), kNone);
+  std::vector<Vec3> normal(b.X.size(), Vec3::Zero());
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const ModelFace& face = m.faces[f];
+    if (!face.alive || face.source < 0) continue;
+    for (const auto& t : b.grids.face_tris[f])
+      for (Index v : t) {
+        if (source[v] == kNone) source[v] = face.source, normal[v] = optimize::slide_normal(face.normal);
+        else if (source[v] != face.source) source[v] = kMany;
+      }
+  }
+  for (std::size_t v = 0; v < normal.size(); ++v)
+    if (source[v] < 0) normal[v] = Vec3::Zero();
+  return normal;
+}
 
 }  // namespace
 
@@ -85,7 +108,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
   const auto t_opt = Clock::now();
   tet::TetComplex cx(b.X);
-  optimize::FilledMesh filled{std::move(b.tets), std::move(b.region), {}, {}};
+  optimize::FilledMesh filled{std::move(b.tets), std::move(b.region), {}, {}, {}};
   // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5) within
   // their input face
   for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
@@ -96,9 +119,10 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
       if (face.front < 0 || face.back < 0) filled.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
     }
   }
-  // nodes on input faces stay where they are
+  // nodes on input faces stay where they are, but for moves within the one face they lie inside
   std::vector<char> fixed = pipeline::node_kinds(d.model, b);
   for (char& k : fixed) k = k != pipeline::kInside;
+  filled.slide = one_face_normals(d.model, b);
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
   const optimize::OptimizeCounts oc =

@@ -138,7 +138,7 @@ TEST(BlockPass, StopEndsTheBlocks) {
   const Case c;
   std::vector<Vec3> X = c.cube.X;
   tet::TetComplex cx(X);
-  FilledMesh filled{c.cube.tets, {}, c.held, {}};
+  FilledMesh filled{c.cube.tets, {}, c.held, {}, {}};
   int calls = 0;
   EXPECT_THROW(optimize_filled(cx, filled, X, c.cube.fixed, OptimizeOptions{}, [&](double) { return ++calls < 3; }, 2), Cancelled);
 }
