@@ -112,7 +112,8 @@ struct GenerateStats {
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;
   std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", ...
-  // B-rep route: the smallest angle of the surface triangles (degrees), and order 2 elements
+  // B-rep route: the smallest angle of the surface triangles (degrees; of the output, after the
+  // face moves of the mean shape's passes), and order 2 elements
   // whose curved boundary edge had to be made straight to keep the Jacobian positive
   double surface_min_angle = 0;
   std::int64_t straightened_edges = 0;

@@ -214,9 +214,13 @@ std::vector<Vec3> flat_face_normals(const BrepInput& in, const pipeline::Boundar
 }
 
 // After the optimisation: the (u, v) of every corner whose node slid in its flat face, from its
-// new position (the order-2 mid-nodes are placed from them), and the grids' own copy of it.
+// new position (the order-2 mid-nodes are placed from them), the grids' own copy of it, and their
+// smallest angle (degrees) as the moves left it.
 void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pipeline::BrepPlacement* best) {
+  double smallest = 180;
   for (pipeline::FacePiece& piece : best->grids.pieces) {
+    for (const auto& t : piece.tris)
+      smallest = std::min(smallest, triangle_min_angle(best->X[t[0]], best->X[t[1]], best->X[t[2]]) * 180 / M_PI);
     if (!in.faces[piece.face].planar) continue;
     const ParametricSurface& surf = *in.faces[piece.face].surface;
     for (std::size_t k = 0; k < piece.tris.size(); ++k)
@@ -227,6 +231,7 @@ void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pip
         best->grids.nodes.x[v] = best->X[v];
       }
   }
+  best->grids.min_angle_deg = smallest;
 }
 
 // The global optimisation (7.5 over the whole mesh) and the output's assembly, checked: a
@@ -238,7 +243,6 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   st->helper_nodes = filled.helper_nodes, st->helpers_removed = filled.helpers_removed;
   st->refilled_cells = filled.refilled;
   st->skipped_nodes = filled.skipped_nodes, st->flips = filled.flips;
-  st->surface_min_angle = best->grids.min_angle_deg;
   // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
   const auto t_opt = Clock::now();
   tet::TetComplex cx(best->X);
@@ -259,6 +263,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   const optimize::OptimizeCounts oc =
       optimize::optimize_filled(cx, std::move(mesh), best->X, best->on_boundary, oo, optimize_progress, opt.threads);
   follow_slid_nodes(in, before, best);
+  st->surface_min_angle = best->grids.min_angle_deg;
   st->optimize_parts = oc.times;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;
