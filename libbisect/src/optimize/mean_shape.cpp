@@ -125,32 +125,27 @@ struct Move {
   double gain = 0;  // in the star's summed α̂
 };
 
-// The smallest angle (degrees) of the triangles round `node` in the plane through it normal to
-// `normal`: the star's faces at the node whose other two nodes lie in that plane (its boundary
-// triangles there); 180 when there is none.
-double smallest_in_plane_angle(const tet::TetComplex& cx, const std::vector<Vec3>& X, Index node, const std::vector<Index>& around,
-                               const Vec3& normal, double tolerance) {
+// The smallest angle (degrees) of the node's boundary triangles: the constrained faces at it of
+// the tetrahedra round it (input faces and interfaces); 180 when there is none.
+double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3>& X, Index node, const std::vector<Index>& around) {
   double worst = 180;
-  for (Index t : around) {
-    const Tet& u = cx.tet[t];
-    Index other[3];
-    int k = 0;
-    for (Index w : u)
-      if (w != node) other[k++] = w;
-    for (int i = 0; i < 3; ++i)
-      for (int j = i + 1; j < 3; ++j) {
-        const Index a = other[i], b = other[j];
-        if (std::abs(normal.dot(X[a] - X[node])) > tolerance || std::abs(normal.dot(X[b] - X[node])) > tolerance) continue;
-        worst = std::min(worst, triangle_min_angle(X[node], X[a], X[b]) * 180 / 3.14159265358979323846);
-      }
-  }
+  for (Index t : around)
+    for (int f = 0; f < 4; ++f) {
+      if (cx.tet[t][f] == node || !cx.is_constrained(t, f)) continue;
+      const std::array<Index, 3> v = cx.face(t, f);
+      worst = std::min(worst, triangle_min_angle(X[v[0]], X[v[1]], X[v[2]]) * 180 / 3.14159265358979323846);
+    }
   return worst;
 }
 
 // Where a node that slides in its face may not take its boundary triangles' smallest angle.
 constexpr double kSlideAngleFloorDeg = 30;
 
-Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around, const Vec3* normal) {
+// How a fixed node may move in its face: in a plane, or on a curved face.
+enum class Slide { kNone, kPlane, kCurved };
+
+Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around, Slide slide,
+              const FaceSlides& slides) {
   Move m;
   double key = std::numeric_limits<double>::max(), scale = 0;
   int count = 0;
@@ -174,17 +169,19 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
     e[k] = h;
     g[k] = (star_score(X, cx.tet, around, node, old + e).objective - before.objective) / h;
   }
-  // in the face's plane: exactly zero along an axis the plane is normal to
-  double angle_floor = 0, tolerance = 0;
-  if (normal) {
-    g -= *normal * normal->dot(g);
-    tolerance = 1e-9 * scale;
-    angle_floor = std::min(smallest_in_plane_angle(cx, X, node, around, *normal, tolerance), kSlideAngleFloorDeg);
+  // in the face's plane (exactly zero along an axis the plane is normal to), or its tangent plane
+  double angle_floor = 0;
+  if (slide != Slide::kNone) {
+    Vec3 normal = slide == Slide::kPlane ? slides.plane[node] : Vec3::Zero();
+    if (slide == Slide::kCurved) slides.onto(node, old, &normal);
+    g -= normal * normal.dot(g);
+    angle_floor = std::min(smallest_boundary_angle(cx, X, node, around), kSlideAngleFloorDeg);
   }
   const double glen = g.norm();
   if (!(glen > 0) || !std::isfinite(glen)) return m;
   for (double s = 0.2 * scale; s > 1e-3 * scale; s *= 0.5) {
-    const Vec3 p = old + (s / glen) * g;
+    Vec3 p = old + (s / glen) * g;
+    if (slide == Slide::kCurved) p = slides.onto(node, p, nullptr);  // back onto the face
     const StarScore after = star_score(X, cx.tet, around, node, p);
     if (!(after.objective > before.objective + 1e-9 * std::abs(before.objective))) continue;
     X[node] = p;
@@ -192,9 +189,10 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
     for (std::size_t i = 0; i < around.size() && ok; ++i) {
       const Tet& u = cx.tet[around[i]];
       // a node in a face: no smaller dihedral angle in its star than there was
-      ok = positive(X, u) && tet_angle_key(X, u) >= key && dihedral_cos(X, u) <= (normal ? star_cos : std::max(was_cos[i], kGuardCos));
+      ok = positive(X, u) && tet_angle_key(X, u) >= key &&
+           dihedral_cos(X, u) <= (slide != Slide::kNone ? star_cos : std::max(was_cos[i], kGuardCos));
     }
-    if (ok && normal) ok = smallest_in_plane_angle(cx, X, node, around, *normal, tolerance) >= angle_floor;
+    if (ok && slide != Slide::kNone) ok = smallest_boundary_angle(cx, X, node, around) >= angle_floor;
     X[node] = old;
     if (!ok) continue;
     m.made = true, m.to = p, m.gain = after.alpha_sum - before.alpha_sum;
@@ -209,19 +207,22 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
 // colour) and made in id order on this one. The moves depend on the colouring alone, so the
 // mesh is the same for every thread count (a serial sweep would let each node see every earlier
 // one's move; here it sees those of the earlier colours).
-std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const std::vector<Vec3>& slide,
+std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const FaceSlides& slides,
                         const std::vector<char>& poor, Running& run, int threads) {
-  // the plane a fixed node slides in, or none
-  const auto plane_of = [&](Index v) -> const Vec3* {
+  // how a fixed node slides in its face, if it does
+  const auto slide_of = [&](Index v) {
     const auto i = static_cast<std::size_t>(v);
-    return i < fixed.size() && fixed[i] && i < slide.size() && slide[i] != Vec3::Zero() ? &slide[i] : nullptr;
+    if (i >= fixed.size() || !fixed[i]) return Slide::kNone;
+    if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) return Slide::kPlane;
+    if (i < slides.curved.size() && slides.curved[i] && slides.onto) return Slide::kCurved;
+    return Slide::kNone;
   };
   std::vector<Index> at(X.size(), -1);  // a live poor tetrahedron at each node that may move
   for (std::size_t t = 0; t < poor.size(); ++t)
     if (cx.alive[t] && poor[t])
       for (Index v : cx.tet[t])
         // a node the sliver repair inserted has an id past `fixed`, and is free
-        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v] || plane_of(v)) at[v] = static_cast<Index>(t);
+        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v] || slide_of(v) != Slide::kNone) at[v] = static_cast<Index>(t);
   std::vector<Index> nodes;
   for (std::size_t v = 0; v < X.size(); ++v)
     if (at[v] >= 0) nodes.push_back(static_cast<Index>(v));
@@ -252,7 +253,7 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
   for (const std::vector<std::size_t>& group : by_colour) {
     tried.assign(group.size(), Move{});
     util::ordered_parallel(
-        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]], plane_of(nodes[group[k]])); },
+        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]], slide_of(nodes[group[k]]), slides); },
         [&](std::size_t k) {
           const std::size_t i = group[k];
           cx.poll(i);
@@ -280,7 +281,7 @@ Vec3 slide_normal(const Vec3& n) {
 }
 
 MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads,
-                        const std::vector<Vec3>& slide) {
+                        const FaceSlides& slides) {
   MeanCounts n;
   Running run;
   std::vector<char> poor(cx.tet.size(), 0);
@@ -311,7 +312,7 @@ MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
         if (flip32(cx, t, a, b, run)) ++flips;
       }
     }
-    const std::int64_t moves = move_nodes(cx, X, fixed, slide, poor, run, threads);
+    const std::int64_t moves = move_nodes(cx, X, fixed, slides, poor, run, threads);
     n.flips += flips;
     n.moves += moves;
     if (flips == 0 && moves == 0) break;

@@ -6,6 +6,7 @@
 // (tet_angle_key) of the tetrahedra it touches, nor makes a dihedral angle under 10.5 degrees.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tet/tet_complex.hpp"
@@ -17,32 +18,42 @@ struct MeanCounts {
   std::int64_t moves = 0;  // node moves
 };
 
+// The fixed nodes that may move within the input face they lie inside (not on its edges) all the
+// same: at coarse counts most nodes are on the boundary (two-boxes-cavity.brep at R = 1000: 272
+// of 330), and the grids on the two sides of a thin wall, made one face at a time, do not line
+// up; moving them in their faces lets the tetrahedra between them take better shapes. Such a
+// move keeps the smallest angle of the node's boundary triangles (its constrained faces; or 30
+// degrees, whichever is less) and the smallest dihedral angle of its star; a move in a plane
+// normal to an axis leaves that coordinate exactly as it was.
+struct FaceSlides {
+  // per node (may be shorter than X): the unit normal of the flat face it lies inside; zero: none
+  std::vector<Vec3> plane;
+  // per node (may be shorter than X): it lies inside a curved face, on which `onto` keeps it
+  std::vector<char> curved;
+  // for such a node v: the point of its face nearest p, and (when normal is not null) the face's
+  // unit normal there; called from several threads at once
+  std::function<Vec3(Index v, const Vec3& p, Vec3* normal)> onto;
+};
+
+// A face's unit normal as FaceSlides::plane holds it: one within round-off of an axis made exactly
+// that axis (so that a move in the plane leaves that coordinate as it was); zero when n is not a
+// unit vector.
+Vec3 slide_normal(const Vec3& n);
+
 // Up to `rounds` rounds, each from the tetrahedra whose α̂ is under 0.18 (its start): a pass of
 // transformations across their interior faces (2-3) and round their interior edges in three
 // tetrahedra (3-2), then a pass of node moves over their free nodes; a round that changes
 // nothing ends the work. A transformation is made when the mesh's mean
 // α̂ rises by it (the new tetrahedra's α̂ summed, less the old ones', above the running mean
 // times the change in count) and the smallest key of the tetrahedra involved does not fall. A
-// free node moves up the gradient of its star's summed α̂ when every tetrahedron around it stays
+// free node (or one that `slides` lets move in its face) moves up the gradient of its star's summed α̂ when every tetrahedron around it stays
 // positive and their smallest key does not fall. The transformations in the order of the
 // tetrahedra's ids, on one thread; the node moves colour by colour (no two nodes of a colour
 // share a tetrahedron), each colour's on `threads` threads (0: one per core): the output is the
 // same for the same input, whatever the thread count.
-// fixed[v]: node v never moves; nodes past its end (inserted by the sliver repair) are free.
-// slide[v], when given and not zero: the unit normal of the flat input face that node v lies
-// inside (not on its edges), in whose plane it may move although fixed. At coarse counts most
-// nodes are on the boundary (two-boxes-cavity.brep at R = 1000: 272 of 330), and the grids on
-// the two sides of a thin wall, made one face at a time, do not line up; moving them in their
-// planes lets the tetrahedra between them take better shapes. Such a move also keeps the
-// smallest angle of the node's boundary triangles (or 30 degrees, whichever is less) and the
-// smallest dihedral angle of its star; a move in a plane normal to an axis leaves that
-// coordinate exactly as it was.
-// A face's unit normal as `slide` holds it: one within round-off of an axis made exactly that
-// axis (so that a move in the plane leaves that coordinate as it was); zero when n is not a
-// unit vector.
-Vec3 slide_normal(const Vec3& n);
-
+// fixed[v]: node v never moves (but for `slides`); nodes past its end (inserted by the sliver
+// repair) are free.
 MeanCounts improve_mean(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, int rounds, int threads = 1,
-                        const std::vector<Vec3>& slide = {});
+                        const FaceSlides& slides = {});
 
 }  // namespace bisect::optimize

@@ -65,8 +65,8 @@ struct Slivers {
 OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec3>& X, const std::vector<char>& fixed,
                         const OptimizeOptions& opt, const std::function<bool(double)>& progress, int threads) {
   OptimizeCounts n;
-  std::vector<Vec3> slide;
-  if (filled) slide = std::move(filled->slide);
+  FaceSlides slides;
+  if (filled) slides = std::move(filled->slides);
   // Stop within a pass: the loops poll cx.cancelled, which calls progress now and then
   util::ProgressPoll poll(progress);
   const std::function<bool()> outer_cancelled = cx.cancelled;
@@ -203,7 +203,7 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
   // at 10^5: 179 tetrahedra under 10 degrees for 8)
   at(kMeanStart);
   if (opt.mean_rounds > 0 && n.folds_left == 0) {
-    const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds, threads, opt.face_moves ? slide : std::vector<Vec3>{});
+    const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds, threads, opt.face_moves ? slides : FaceSlides{});
     n.mean_changes = mean.flips + mean.moves;
   }
   n.times.mean = seconds_since(t0);

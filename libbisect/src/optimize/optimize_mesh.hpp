@@ -11,6 +11,7 @@
 
 #include "bisect/generate.hpp"
 #include "optimize/block_pass.hpp"
+#include "optimize/mean_shape.hpp"
 #include "tet/tet_complex.hpp"
 
 namespace bisect::optimize {
@@ -41,9 +42,8 @@ struct FilledMesh {
   std::vector<Index> tags;  // regions
   FaceSet held;             // input faces and interfaces: no transformation crosses or removes them
   FaceTags surface_tag;     // the outer boundary's faces with their input face (TetComplex::surface_tag)
-  // per node (may be empty or shorter than X): the unit normal of the flat input face a fixed node
-  // lies inside, in whose plane the mean shape's passes may move it (mean_shape.hpp); zero: none
-  std::vector<Vec3> slide;
+  // the fixed nodes the mean shape's passes may move within their input faces (mean_shape.hpp)
+  FaceSlides slides;
 };
 
 // The same from the fill's output: the transformation and smoothing passes in blocks on `threads`

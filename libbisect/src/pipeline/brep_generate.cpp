@@ -4,6 +4,7 @@
 // optimisation, the mesh assembly and, for order 2, the curved mid-nodes.
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <cmath>
 #include <set>
@@ -198,22 +199,46 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
   }
 }
 
-// Per grid node: the unit normal of the flat B-rep face it lies inside (zero for a node on an
-// edge or vertex, or on a curved face), as optimize::slide_normal makes it.
-std::vector<Vec3> flat_face_normals(const BrepInput& in, const pipeline::BoundaryNodes& nodes) {
-  std::vector<Vec3> normal(nodes.on.size(), Vec3::Zero());
-  std::vector<Vec3> of_face(in.faces.size(), Vec3::Zero());
+// The grid nodes that may move within the B-rep face they lie inside (optimize::FaceSlides): in
+// the plane of a flat face (its normal as optimize::slide_normal makes it), or on a curved face,
+// back onto which each trial position is taken by the face's closest point from the node's own
+// (u, v). Nodes on edges and vertices stay.
+optimize::FaceSlides face_slides(const BrepInput& in, const pipeline::BrepGrids& grids) {
+  optimize::FaceSlides s;
+  const std::size_t n = grids.nodes.on.size();
+  s.plane.assign(n, Vec3::Zero());
+  s.curved.assign(n, 0);
+  std::vector<Vec3> flat(in.faces.size(), Vec3::Zero());
   for (std::size_t f = 0; f < in.faces.size(); ++f) {
     if (!in.faces[f].planar || !in.faces[f].surface) continue;
     const ParametricSurface& surf = *in.faces[f].surface;
-    of_face[f] = optimize::slide_normal(surf.normal(0.5 * (surf.uv_min() + surf.uv_max())));
+    flat[f] = optimize::slide_normal(surf.normal(0.5 * (surf.uv_min() + surf.uv_max())));
   }
-  for (std::size_t v = 0; v < nodes.on.size(); ++v)
-    if (nodes.on[v].kind == pipeline::PointOn::kFace) normal[v] = of_face[nodes.on[v].id];
-  return normal;
+  auto face = std::make_shared<std::vector<Index>>(n, -1);
+  auto uv = std::make_shared<std::vector<Vec2>>(n, Vec2::Zero());
+  for (const pipeline::FacePiece& piece : grids.pieces)
+    for (std::size_t k = 0; k < piece.tris.size(); ++k)
+      for (int i = 0; i < 3; ++i) (*uv)[piece.tris[k][i]] = piece.tri_uv[k][i];
+  for (std::size_t v = 0; v < n; ++v) {
+    const pipeline::PointOn& on = grids.nodes.on[v];
+    if (on.kind != pipeline::PointOn::kFace || !in.faces[on.id].surface) continue;
+    if (in.faces[on.id].planar) {
+      s.plane[v] = flat[on.id];
+    } else {
+      s.curved[v] = 1;
+      (*face)[v] = on.id;
+    }
+  }
+  s.onto = [&in, face, uv](Index v, const Vec3& p, Vec3* normal) {
+    const ParametricSurface& surf = *in.faces[(*face)[v]].surface;
+    const Vec2 at = surf.closest_point(p, (*uv)[v]);
+    if (normal) *normal = surf.normal(at);
+    return surf.point(at);
+  };
+  return s;
 }
 
-// After the optimisation: the (u, v) of every corner whose node slid in its flat face, from its
+// After the optimisation: the (u, v) of every corner whose node slid in its face, from its
 // new position (the order-2 mid-nodes are placed from them), the grids' own copy of it, and their
 // smallest angle (degrees) as the moves left it.
 void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pipeline::BrepPlacement* best) {
@@ -221,7 +246,6 @@ void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pip
   for (pipeline::FacePiece& piece : best->grids.pieces) {
     for (const auto& t : piece.tris)
       smallest = std::min(smallest, triangle_min_angle(best->X[t[0]], best->X[t[1]], best->X[t[2]]) * 180 / M_PI);
-    if (!in.faces[piece.face].planar) continue;
     const ParametricSurface& surf = *in.faces[piece.face].surface;
     for (std::size_t k = 0; k < piece.tris.size(); ++k)
       for (int i = 0; i < 3; ++i) {
@@ -252,9 +276,9 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
       mesh.held.insert(tet::face_key(t[0], t[1], t[2]));
       if (piece.cell_in < 0) mesh.surface_tag[tet::face_key(t[0], t[1], t[2])] = piece.face;
     }
-  // nodes inside a flat B-rep face may move in its plane in the passes for the mean shape
-  mesh.slide = flat_face_normals(in, best->grids.nodes);
-  const std::vector<Vec3> before(best->X.begin(), best->X.begin() + static_cast<std::ptrdiff_t>(mesh.slide.size()));
+  // nodes inside a B-rep face may move in it in the passes for the mean shape
+  mesh.slides = face_slides(in, best->grids);
+  const std::vector<Vec3> before(best->X.begin(), best->X.begin() + static_cast<std::ptrdiff_t>(mesh.slides.plane.size()));
   // the surface grid is the true surface's: it stays as meshed (no 2-2 transformation)
   OptimizeOptions oo = opt.optimize;
   oo.boundary_flips = false;

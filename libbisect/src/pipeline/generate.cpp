@@ -122,7 +122,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   // nodes on input faces stay where they are, but for moves within the one face they lie inside
   std::vector<char> fixed = pipeline::node_kinds(d.model, b);
   for (char& k : fixed) k = k != pipeline::kInside;
-  filled.slide = one_face_normals(d.model, b);
+  filled.slides.plane = one_face_normals(d.model, b);
   std::function<bool(double)> optimize_progress;
   if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
   const optimize::OptimizeCounts oc =

@@ -1,9 +1,10 @@
-// Face moves on the B-rep route (optimize/mean_shape.hpp): at coarse counts the mean shape's
-// passes move nodes inside flat B-rep faces in their planes. On a box with a box-shaped cavity
-// (walls 0.25 thick, like ../shared's two-boxes-cavity) at R = 1000: the mean α̂ rises, every
-// boundary node stays exactly in its face's plane, and at order 2 the mid-nodes of the moved
-// nodes' edges are placed from where the nodes went (the middle of the edge on a flat face), so
-// every element stays positive at its corners and Gauss points.
+// Face moves on the B-rep route (optimize/mean_shape.hpp): the mean shape's passes move nodes
+// inside B-rep faces within them. On a box with a box-shaped cavity (walls 0.25 thick, like
+// ../shared's two-boxes-cavity) at R = 1000: the mean α̂ rises, every boundary node stays exactly
+// in its face's plane, and at order 2 the mid-nodes of the moved nodes' edges are placed from
+// where the nodes went (the middle of the edge on a flat face), so every element stays positive
+// at its corners and Gauss points. On a box with a spherical cavity, the nodes that move on the
+// sphere stay on it, mid-nodes included, and the surface's smallest angle does not fall.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -12,12 +13,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <set>
 #include <vector>
 
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
 #include "occ_checks.hpp"
+#include "occ_shapes.hpp"
 
 namespace bisect {
 namespace {
@@ -79,6 +83,61 @@ TEST(BrepFaceMoves, NodesSlideInTheirPlanesAndTheMidNodesFollow) {
     }
   }
   EXPECT_GT(moved, 20u);
+}
+
+double surface_min_angle(const TetMesh& m) {
+  double worst = 180;
+  for (std::size_t t = 0; t < m.num_tris(); ++t) {
+    const Index* v = &m.tris[m.nodes_per_tri() * t];
+    worst = std::min(worst, triangle_min_angle(m.nodes[v[0]], m.nodes[v[1]], m.nodes[v[2]]) * 180 / 3.14159265358979323846);
+  }
+  return worst;
+}
+
+TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {
+  const BrepInput in = test::input_of(test::make_box_with_cavity(), "box with a spherical cavity");
+  const Vec3 centre(2, 2, 2);
+  TetMesh m[2];
+  GenerateStats st[2];
+  for (int moves : {0, 1}) {
+    GenerateOptions opt;
+    opt.sizing.elements = 3000;
+    opt.order = 2;
+    opt.optimize.face_moves = moves == 1;
+    m[moves] = generate_brep_mesh(in, opt, &st[moves]);
+    EXPECT_TRUE(validate(m[moves]).empty()) << moves;
+  }
+  const TetMesh& b = m[1];
+  std::size_t on_sphere = 0, moved = 0;
+  std::set<Index> straight;  // mid-nodes of edges made straight to keep the Jacobian positive
+  for (std::size_t t = 0; t < b.num_tris(); ++t)
+    for (int i = 0; i < 6; ++i) {
+      const Index v = b.tris[6 * t + i];
+      const Vec3& p = b.nodes[v];
+      const bool on_box = std::min({p.minCoeff(), 4 - p.maxCoeff()}) < 1e-9;
+      if (on_box) continue;
+      ++on_sphere;
+      if (i >= 3 && std::abs((p - centre).norm() - 1) > 1e-9) {
+        // not on the sphere: at the middle of its chord, one of the edges the stats count
+        const Index* c = &b.tris[6 * t];
+        const Index e0 = c[kTriEdge[i - 3][0]], e1 = c[kTriEdge[i - 3][1]];
+        EXPECT_LT((p - 0.5 * (b.nodes[e0] + b.nodes[e1])).norm(), 1e-12) << "mid-node " << v;
+        straight.insert(v);
+        continue;
+      }
+      EXPECT_NEAR((p - centre).norm(), 1.0, 1e-9) << "node " << v << (i < 3 ? "" : " (a mid-node)");
+      if (i >= 3) {  // over its own edge: within 8 sagittas (L^2 / 8 each on the unit sphere) of the chord's middle
+        const Index* c = &b.tris[6 * t];
+        const Vec3 &a = b.nodes[c[kTriEdge[i - 3][0]]], &z = b.nodes[c[kTriEdge[i - 3][1]]];
+        EXPECT_LT((p - 0.5 * (a + z)).norm(), (z - a).squaredNorm()) << "mid-node " << v << " is not over its edge";
+      }
+      if (i < 3 && static_cast<std::size_t>(v) < m[0].nodes.size()) moved += p != m[0].nodes[v];
+    }
+  EXPECT_LE(static_cast<std::int64_t>(straight.size()), st[1].straightened_edges);
+  EXPECT_GT(on_sphere, 100u);
+  EXPECT_GT(moved, 10u);
+  EXPECT_GE(surface_min_angle(m[1]), std::min(surface_min_angle(m[0]), 30.0) - 1e-9);
+  RecordProperty("surface_min_angle", std::to_string(surface_min_angle(m[0])) + " -> " + std::to_string(surface_min_angle(m[1])));
 }
 
 }  // namespace

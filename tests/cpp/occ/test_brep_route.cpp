@@ -133,22 +133,26 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
       EXPECT_GE(q.dihedral_min.min, 2.0) << model;
       EXPECT_LE(under_10, 40) << model;
     } else if (model == "models/cad/Angled.step") {
-      // (14; of the 12 before the face corner limit, not located again since) all 12 within
+      // (8 since the face moves; 14 before them; of the 12 before the face corner limit, not
+      // located again since) all 12 within
       // 3.4 mm (two spacings) of where the small cylinder Face4 cuts the large
       // cylinder Face39 (along the B-spline Edge12 and its twin), caps and slivers of boundary
       // nodes, which neither moves nor an inserted node lift: the mesher's, not the CAD's (the two
       // faces meet there at 81 to 99 degrees)
-      EXPECT_GE(q.dihedral_min.min, 2.0) << model;
-      EXPECT_LE(under_10, 14) << model;
+      EXPECT_GE(q.dihedral_min.min, 4.0) << model;
+      EXPECT_LE(under_10, 10) << model;
     } else {
       EXPECT_GE(q.dihedral_min.min, 10.0) << model;
     }
     // issue 16's surface angle, 20 degrees, but where the B-rep has sharper corners of its own
-    // (part.step, Angled.step) and on sphere-in-box (9.7: its sphere's proxy facets are cut
+    // (part.step, Angled.step) and on sphere-in-box (17.7: its sphere's proxy facets are cut
     // along their edges, and a piece between such an edge and a cut line beside it is a few
-    // degrees wide at a corner). Flange's 12.6 (two cut lines from one point of its top face) has
-    // been 22.8 since no cut leaves a corner under 25 degrees in a flat face.
-    if (model != "models/cad/part.step" && model != "models/cad/Angled.step" && model != "models/sphere-in-box.brep") {
+    // degrees wide at a corner; 9.7 before the face moves let the nodes there move on the sphere).
+    // Flange's 12.6 (two cut lines from one point of its top face) has been 22.8 since no cut
+    // leaves a corner under 25 degrees in a flat face.
+    if (model == "models/sphere-in-box.brep") {
+      EXPECT_GE(st.surface_min_angle, 15.0) << model;
+    } else if (model != "models/cad/part.step" && model != "models/cad/Angled.step") {
       EXPECT_GE(st.surface_min_angle, 20.0) << model;
     }
   }
