@@ -40,18 +40,25 @@ bool in_a_face_plane(const Vec3& p) {
   return false;
 }
 
-TEST(BrepFaceMoves, NodesSlideInTheirPlanesAndTheMidNodesFollow) {
-  const BrepInput in = hollow_box();
+// The shape at R, order 2, without the face moves (m[0]) and with them (m[1]), each validated.
+struct BothWays {
   TetMesh m[2];
   GenerateStats st[2];
-  for (int moves : {0, 1}) {
-    GenerateOptions opt;
-    opt.sizing.elements = 1000;
-    opt.order = 2;
-    opt.optimize.face_moves = moves == 1;
-    m[moves] = generate_brep_mesh(in, opt, &st[moves]);
-    EXPECT_TRUE(validate(m[moves]).empty()) << moves;
+  BothWays(const BrepInput& in, std::int64_t elements) {
+    for (int moves : {0, 1}) {
+      GenerateOptions opt;
+      opt.sizing.elements = elements;
+      opt.order = 2;
+      opt.optimize.face_moves = moves == 1;
+      m[moves] = generate_brep_mesh(in, opt, &st[moves]);
+      EXPECT_TRUE(validate(m[moves]).empty()) << moves;
+    }
   }
+};
+
+TEST(BrepFaceMoves, NodesSlideInTheirPlanesAndTheMidNodesFollow) {
+  BothWays both(hollow_box(), 1000);
+  const TetMesh* m = both.m;
   // the corners (mid-nodes come after them; their count follows the edges, which the passes'
   // transformations change): the same ids in both
   Index corners[2] = {0, 0};
@@ -95,18 +102,10 @@ double surface_min_angle(const TetMesh& m) {
 }
 
 TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {
-  const BrepInput in = test::input_of(test::make_box_with_cavity(), "box with a spherical cavity");
+  BothWays both(test::input_of(test::make_box_with_cavity(), "box with a spherical cavity"), 3000);
+  const TetMesh* m = both.m;
+  const GenerateStats* st = both.st;
   const Vec3 centre(2, 2, 2);
-  TetMesh m[2];
-  GenerateStats st[2];
-  for (int moves : {0, 1}) {
-    GenerateOptions opt;
-    opt.sizing.elements = 3000;
-    opt.order = 2;
-    opt.optimize.face_moves = moves == 1;
-    m[moves] = generate_brep_mesh(in, opt, &st[moves]);
-    EXPECT_TRUE(validate(m[moves]).empty()) << moves;
-  }
   const TetMesh& b = m[1];
   std::size_t on_sphere = 0, moved = 0;
   std::set<Index> straight;  // mid-nodes of edges made straight to keep the Jacobian positive
