@@ -57,8 +57,9 @@ struct OptimizeOptions {
   // rounds of transformations and node moves for the mean α̂ after the sliver repair, from the
   // tetrahedra under α̂ 0.18, keeping every smallest angle (optimize/mean_shape.hpp)
   int mean_rounds = 2;
-  // in those rounds, nodes inside a flat input face move in its plane too (never off it, never
-  // onto or across its edges): at coarse counts most nodes are on the boundary
+  // in those rounds, nodes inside an input face move within it too (in a flat face's plane; on a
+  // B-rep's curved face, taken back onto it; never onto or across its edges): at coarse counts
+  // most nodes are on the boundary
   bool face_moves = true;
   // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
   // the face grids are already optimised and on the ../shared models it removed no more
