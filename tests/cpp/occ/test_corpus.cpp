@@ -33,6 +33,24 @@ const std::map<std::string, std::string> kNotYet = {
     {"wrenchnut.brep", "no point sees its whole boundary"},
 };
 
+// file -> the smallest dihedral angle (degrees) its order-2 mesh at 2*10^4 keeps: about four
+// fifths of what it measured after the face moves (in brackets; before them: Cone_1 10.9,
+// Kurbelwelle 0.05, x_as1_tu_203 6.8, x_cube_sphere_cube_compound 17.7, x_full_sphere 10.5,
+// x_ring 5.7, x_rod 5.4, x_t20_data 2.2); Zylkopf's and Kurbelwelle's small ones are at their
+// 0.2 mm features
+const std::map<std::string, double> kSmallestDihedral = {
+    {"Cone_1.brep", 10.0},                      // (12.33)
+    {"Kurbelwelle.brep", 0.8},                  // (1.06)
+    {"Zylkopf.brep", 0.6},                      // (0.80)
+    {"x_as1_tu_203.brep", 7.0},                 // (8.85)
+    {"x_cube_sphere_cube_compound.brep", 14.5}, // (18.08)
+    {"x_full_sphere.brep", 15.0},               // (19.17)
+    {"x_problemSphere.brep", 1.9},              // (2.43)
+    {"x_ring.brep", 8.0},                       // (10.01)
+    {"x_rod.brep", 5.2},                        // (6.50)
+    {"x_t20_data.brep", 1.9},                   // (2.41)
+};
+
 std::vector<std::string> corpus() {
   std::vector<std::string> out;
   for (const std::string& m : test::shared_brep_models())
@@ -64,6 +82,9 @@ TEST_P(Corpus, MeshesOrIsRefusedNamingTheFace) {
     if (st.count_floor > 0) EXPECT_FALSE(st.count_floor_reason.empty()) << file;
     else EXPECT_NEAR(count, 20000, 4000) << file;
     const QualitySummary q = summarize_quality(element_quality(m));
+    const auto bound = kSmallestDihedral.find(file);
+    ASSERT_TRUE(bound != kSmallestDihedral.end()) << file << ": give it a bound in kSmallestDihedral";
+    EXPECT_GE(q.dihedral_min.min, bound->second) << file;
     std::printf("[ corpus   ] %-34s %7zu tets (floor: %s), min dihedral %5.2f, mean alpha %.3f, %.1f s\n", file.c_str(), m.num_tets(),
                 st.count_floor_reason.empty() ? "none" : st.count_floor_reason.c_str(), q.dihedral_min.min, q.alpha.mean, seconds);
   } catch (const Cancelled&) {
