@@ -28,7 +28,7 @@ SHARED = os.environ.get("BISECTMESH_SHARED_DIR") or os.path.join(
 MODELS = ("cantilever.brep", "slender-appendage.brep", "lug.brep", "plate-hole.brep", "two-boxes-cavity.brep")
 COUNTS = (50, 100, 300, 1000, 3000)
 # (model, R) -> (mean alpha kept at R >= 1000, why); none since the mean shape's passes move the
-# nodes inside flat faces too (two-boxes-cavity at 1,000 had 0.237 before)
+# nodes inside faces too (two-boxes-cavity at 1,000 had 0.237 before)
 SHORTFALLS = {}
 FIGURES = {}
 
