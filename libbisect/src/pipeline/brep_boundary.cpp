@@ -221,7 +221,7 @@ PointOn BrepBoundary::edge_on(Index a, Index b) const {
   return on;
 }
 
-void BrepBoundary::discretise_edges(const size::SizeField& h) {
+void BrepBoundary::discretise_edges(const size::SizeField& h, const std::function<bool()>& cancelled) {
   nodes = {};
   edge_nodes.clear();
   for (std::size_t v = 0; v < model.nodes.size(); ++v) {
@@ -237,6 +237,7 @@ void BrepBoundary::discretise_edges(const size::SizeField& h) {
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Index a = std::min(loop[i], loop[(i + 1) % loop.size()]), b = std::max(loop[i], loop[(i + 1) % loop.size()]);
         if (edge_nodes.count({a, b})) continue;
+        if (cancelled && cancelled()) throw Cancelled();
         auto& inner = edge_nodes[{a, b}];
         const PointOn along = edge_on(a, b);
         const Vec3 pa = model.nodes[a], pb = model.nodes[b];

@@ -10,6 +10,7 @@
 // or vertex exactly (ARCHITECTURE.md §1: every surface node lies on its face).
 #pragma once
 #include <array>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -66,8 +67,9 @@ class BrepBoundary {
 
   // Every live model edge discretised once by h (ARCHITECTURE.md §1: edges discretised once, by
   // one size field): model nodes first (ids = model node ids), then each edge's inner nodes.
-  // edge_nodes[(lo, hi)]: the inner nodes from lo to hi.
-  void discretise_edges(const size::SizeField& h);
+  // edge_nodes[(lo, hi)]: the inner nodes from lo to hi. cancelled (optional): asked once per
+  // model edge, a true answer throws Cancelled (up to 4096 curve points and size queries each).
+  void discretise_edges(const size::SizeField& h, const std::function<bool()>& cancelled = {});
   BoundaryNodes nodes;
   std::map<std::pair<Index, Index>, std::vector<Index>> edge_nodes;
   // Edges to cut into this many times the segments the size asks for: a face piece whose

@@ -406,13 +406,16 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       bool at_floor = false;  // a coarser base no longer lowered the count
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
-        const size::SizeField h = size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls, &sampling);
-        if (opt.max_elements > 0 && filling == 0 && round == 0 && h.smallest() < h.base())  // walls or features: bounded first
-          pipeline::check_element_bound(field_count(in, dc.d, h, dc.proxy.tess), opt, in.source, element_bound_why(sizes), "the size field's samples over the cells");
         // the search's rounds share the placement's part of the bar (most end within three)
         const auto placed_at = [&](double rounds) {
           return kBar.decomposed + (kBar.placed - kBar.decomposed) * std::min(1.0, rounds / 3);
         };
+        util::ProgressPoll field_poll(progress);
+        field_poll.at(placed_at(round));
+        const size::SizeField h =
+            size::brep_size_field(in, dc.proxy.tess, np, opt.sizing, &sizes, &walls, &sampling, [&] { return field_poll.cancelled(); });
+        if (opt.max_elements > 0 && filling == 0 && round == 0 && h.smallest() < h.base())  // walls or features: bounded first
+          pipeline::check_element_bound(field_count(in, dc.d, h, dc.proxy.tess), opt, in.source, element_bound_why(sizes), "the size field's samples over the cells");
         std::function<bool(double)> place_progress;
         if (progress) place_progress = [&](double x) { return progress(placed_at(round + x)); };
         pipeline::BrepPlacement trial = pipeline::place_brep_nodes(in, dc.proxy, dc.d, h, opt.threads, place_progress);

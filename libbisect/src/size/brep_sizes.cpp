@@ -50,8 +50,11 @@ double curvature_size(double kappa, const SizeOptions& o, double none) {
 }
 
 SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o, BrepSizeReport* report,
-                          const std::vector<WallSample>* walls, SizeSamplingCache* cache) {
+                          const std::vector<WallSample>* walls, SizeSamplingCache* cache, const std::function<bool()>& cancelled) {
   check_options(in, o);
+  auto poll = [&] {
+    if (cancelled && cancelled()) throw Cancelled();
+  };
   SizeSamplingCache own_cache;
   SizeSamplingCache& kept = cache ? *cache : own_cache;
   if (kept.triangles.size() != tess.faces.size()) {
@@ -90,6 +93,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
     const bool curved = !face.planar && (o.curvature_elements > 0 || o.chord_deviation > 0);
     if (!curved && face_region[f] <= 0) continue;
     for (std::size_t t = 0; t < tf.tris.size(); ++t) {
+      poll();
       const auto& uv = tf.uv[t];
       SizeSamplingCache::Triangle& tri = kept.triangles[f][t];
       const Vec2 centre = (uv[0] + uv[1] + uv[2]) / 3;
@@ -138,6 +142,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
   for (std::size_t e = 0; e < in.edges.size(); ++e) {
     const BrepEdge& edge = in.edges[e];
     if (edge.degenerate || !edge.curve) continue;
+    poll();
     const ParametricCurve& c = *edge.curve;
     constexpr int kProbe = 32;
     SizeSamplingCache::Edge& kept_edge = kept.edges[e];
@@ -187,7 +192,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
       add(w.p, s, &rep.wall_sources);
       rep.thinnest_wall = rep.thinnest_wall > 0 ? std::min(rep.thinnest_wall, w.thickness) : w.thickness;
     }
-  field.finish();
+  field.finish(cancelled);
   if (report) *report = rep;
   return field;
 }

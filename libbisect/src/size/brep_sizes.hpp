@@ -6,6 +6,7 @@
 // where it stands (wall_thickness.hpp), so that a thin wall gets elements across it, not flat
 // tetrahedra between the grids of its two sides.
 #pragma once
+#include <functional>
 #include <string>
 
 #include "bisect/brep_input.hpp"
@@ -52,9 +53,12 @@ struct SizeSamplingCache {
 
 // base: the spacing from R or the size (already clamped by max_size). walls: the thickness
 // samples (wall_thickness.hpp), null for none. cache: the samples of earlier calls on the same
-// input and tessellation (null: none kept). Checks the options (InputError naming the option).
+// input and tessellation (null: none kept). cancelled (optional): asked once per tessellation
+// triangle and edge and inside the tree's build; a true answer throws Cancelled (a chord
+// deviation of 3e-4 on a 5 mm cylinder: 2.7 s under a sanitizer without a poll). Checks the
+// options (InputError naming the option).
 SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, double base, const SizeOptions& o,
                           BrepSizeReport* report = nullptr, const std::vector<WallSample>* walls = nullptr,
-                          SizeSamplingCache* cache = nullptr);
+                          SizeSamplingCache* cache = nullptr, const std::function<bool()>& cancelled = {});
 
 }  // namespace bisect::size

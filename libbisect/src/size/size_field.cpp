@@ -36,7 +36,7 @@ void SizeField::add(const Vec3& p, double s) {
   src_.push_back({p, s});
 }
 
-int SizeField::build(int first, int count) {
+int SizeField::build(int first, int count, const std::function<bool()>& cancelled) {
   Node n;
   n.lo = n.hi = src_[first].p;
   n.s_min = src_[first].s;
@@ -46,6 +46,7 @@ int SizeField::build(int first, int count) {
   }
   n.first = first, n.count = count, n.left = n.right = -1;
   const int id = static_cast<int>(tree_.size());
+  if (cancelled && id % 4096 == 0 && cancelled()) throw Cancelled();
   tree_.push_back(n);
   if (count > kLeaf) {
     int axis = 0;
@@ -53,16 +54,16 @@ int SizeField::build(int first, int count) {
     const int half = count / 2;
     std::nth_element(src_.begin() + first, src_.begin() + first + half, src_.begin() + first + count,
                      [axis](const SizeSource& a, const SizeSource& b) { return a.p[axis] < b.p[axis]; });
-    const int l = build(first, half);
-    const int r = build(first + half, count - half);
+    const int l = build(first, half, cancelled);
+    const int r = build(first + half, count - half, cancelled);
     tree_[id].left = l, tree_[id].right = r;
   }
   return id;
 }
 
-void SizeField::finish() {
+void SizeField::finish(const std::function<bool()>& cancelled) {
   tree_.clear();
-  if (!src_.empty()) build(0, static_cast<int>(src_.size()));
+  if (!src_.empty()) build(0, static_cast<int>(src_.size()), cancelled);
   built_ = true;
 }
 
