@@ -21,7 +21,12 @@ EXCLUDE=${SANITIZE_EXCLUDE:-'(^|/)(OccSharedModel|GenerateSharedModels|BrepRoute
 JOBS=${SANITIZE_JOBS:-2}
 start=$(date +%s)
 
-SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# UBSan without its null, pointer-overflow and alignment checks: those three instrument every
+# pointer use in the templates (Eigen, the STL, OpenCASCADE) and doubled the build's compile time
+# (brep_grids.cpp: 17 s with them, 9.4 s without, 9.5 s for ASan alone), for little: ASan reports
+# a null dereference itself, and x86 reads misaligned data. Signed overflow, shifts, bounds,
+# float casts, vptr, bool/enum loads and the rest stay.
+SAN="-fsanitize=address,undefined -fno-sanitize=null,pointer-overflow,alignment -fno-sanitize-recover=all -fno-omit-frame-pointer"
 LAUNCHER=()
 command -v ccache >/dev/null 2>&1 && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 mkdir -p "$BUILD"

@@ -45,6 +45,8 @@ double signed_min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3&
 
 // The smallest corner angle of the triangle a, b, c in 3D (radians): the surface grids' measure.
 double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c);
+// The same in degrees (the unit of the statistics and the reports).
+double triangle_min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
 // cancelled (optional) is asked every 4096 tetrahedra; true stops with Cancelled.

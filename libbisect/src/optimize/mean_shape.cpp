@@ -133,7 +133,7 @@ double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3
     for (int f = 0; f < 4; ++f) {
       if (cx.tet[t][f] == node || !cx.is_constrained(t, f)) continue;
       const std::array<Index, 3> v = cx.face(t, f);
-      worst = std::min(worst, triangle_min_angle(X[v[0]], X[v[1]], X[v[2]]) * 180 / 3.14159265358979323846);
+      worst = std::min(worst, triangle_min_angle_deg(X[v[0]], X[v[1]], X[v[2]]));
     }
   return worst;
 }

@@ -12,6 +12,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
+#include "bisect/quality.hpp"
 #include "optimize/inverted_refill.hpp"
 #include "optimize/mean_shape.hpp"
 #include "optimize/optimize_mesh.hpp"
@@ -245,7 +246,7 @@ void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pip
   double smallest = 180;
   for (pipeline::FacePiece& piece : best->grids.pieces) {
     for (const auto& t : piece.tris)
-      smallest = std::min(smallest, triangle_min_angle(best->X[t[0]], best->X[t[1]], best->X[t[2]]) * 180 / M_PI);
+      smallest = std::min(smallest, triangle_min_angle_deg(best->X[t[0]], best->X[t[1]], best->X[t[2]]));
     const ParametricSurface& surf = *in.faces[piece.face].surface;
     for (std::size_t k = 0; k < piece.tris.size(); ++k)
       for (int i = 0; i < 3; ++i) {

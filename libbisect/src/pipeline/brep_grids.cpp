@@ -476,8 +476,6 @@ Made mesh_cut_face(const BrepBoundary& bd, Index fi, const size::SizeField& h, c
   return out;
 }
 
-double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_min_angle(a, b, c) * 180 / M_PI; }
-
 }  // namespace
 
 BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::SizeField& h, int threads,
@@ -601,7 +599,7 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
               piece.tris.push_back(tris[i]);
               piece.tri_uv.push_back({mk.uv[mk.tris[i][0]], mk.uv[mk.tris[i][1]], mk.uv[mk.tris[i][2]]});
               const auto& t = tris[i];
-              g.min_angle_deg = std::min(g.min_angle_deg, min_angle_deg(g.nodes.x[t[0]], g.nodes.x[t[1]], g.nodes.x[t[2]]));
+              g.min_angle_deg = std::min(g.min_angle_deg, triangle_min_angle_deg(g.nodes.x[t[0]], g.nodes.x[t[1]], g.nodes.x[t[2]]));
             }
           } else {
             g.cut_tris[cut_faces[k - jobs.size()]] = std::move(tris);

@@ -35,6 +35,8 @@ double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return ca <= ab ? at(b, c, a) : at(c, a, b);
 }
 
+double triangle_min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_min_angle(a, b, c) * kDegrees; }
+
 double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return 2 * std::atan(min_solid_angle_tan_half(a, b, c, d));
 }

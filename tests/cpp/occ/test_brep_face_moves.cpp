@@ -21,11 +21,13 @@
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "mesh_measures.hpp"
 #include "occ_checks.hpp"
 #include "occ_shapes.hpp"
 
 namespace bisect {
 namespace {
+using test::surface_min_angle;
 
 // [0,2] x [0,1] x [0,1] less [0.25,1.75] x [0.25,0.75] x [0.25,0.75]: the planes of its faces
 BrepInput hollow_box() {
@@ -89,15 +91,6 @@ TEST(BrepFaceMoves, NodesSlideInTheirPlanesAndTheMidNodesFollow) {
     }
   }
   EXPECT_GT(moved, 20u);
-}
-
-double surface_min_angle(const TetMesh& m) {
-  double worst = 180;
-  for (std::size_t t = 0; t < m.num_tris(); ++t) {
-    const Index* v = &m.tris[m.nodes_per_tri() * t];
-    worst = std::min(worst, triangle_min_angle(m.nodes[v[0]], m.nodes[v[1]], m.nodes[v[2]]) * 180 / 3.14159265358979323846);
-  }
-  return worst;
 }
 
 TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {

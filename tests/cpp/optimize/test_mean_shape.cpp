@@ -12,6 +12,7 @@
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
+#include "mesh_measures.hpp"
 #include "optimize/grid_cube.hpp"
 #include "optimize/mean_shape.hpp"
 #include "optimize/sliver_repair.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 using tet::Tet;
 using tet::TetComplex;
+using test::surface_min_angle;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -142,16 +144,6 @@ TEST(MeanShape, ThroughTheGeneratorTheMeanRisesAndTheSmallestAngleHolds) {
       EXPECT_GE(q[1].dihedral_min.min, std::min(q[0].dihedral_min.min, 10.5)) << what;
       EXPECT_LE(q[1].pct_dihedral_below_10 * static_cast<double>(q[1].tets), q[0].pct_dihedral_below_10 * static_cast<double>(q[0].tets) + 1e-9) << what;
     }
-}
-
-// The smallest corner angle of the mesh's boundary triangles, degrees.
-double surface_min_angle(const TetMesh& m) {
-  double worst = 180;
-  for (std::size_t t = 0; t < m.num_tris(); ++t) {
-    const Index* v = &m.tris[3 * t];
-    worst = std::min(worst, triangle_min_angle(m.nodes[v[0]], m.nodes[v[1]], m.nodes[v[2]]) * 180 / kPi);
-  }
-  return worst;
 }
 
 // A plate 4 x 3 x 1 at coarse counts, where most nodes are on its faces: with face moves some
