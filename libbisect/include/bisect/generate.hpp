@@ -59,7 +59,9 @@ struct OptimizeOptions {
   int mean_rounds = 2;
   // in those rounds, nodes inside an input face move within it too (in a flat face's plane; on a
   // B-rep's curved face, taken back onto it; never onto or across its edges): at coarse counts
-  // most nodes are on the boundary
+  // most nodes are on the boundary; and after those rounds, moves of the nodes of boundary
+  // triangles under 25 degrees within their faces for those triangles' sake, each keeping its
+  // star's smallest dihedral angle (optimize/surface_angles.hpp)
   bool face_moves = true;
   // the 2-2 transformation on the outer boundary in the global passes (7.5): off by default, as
   // the face grids are already optimised and on the ../shared models it removed no more
@@ -107,14 +109,15 @@ struct GenerateStats {
   std::int64_t flips = 0;             // local transformations applied, all stages
   std::int64_t sliver_moves = 0;      // node moves of the sliver repair
   std::int64_t mean_changes = 0;      // transformations and node moves of the mean-shape passes
+  std::int64_t surface_moves = 0;     // node moves within faces for the boundary triangles' angles
   std::int64_t fillings = 0;          // times the cells were filled while the count was sought
   std::int64_t graded_nodes = 0;      // interior nodes placed by the grading from fine boundary spacing
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;
   std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", ...
-  // B-rep route: the smallest angle of the surface triangles (degrees; of the output, after the
-  // face moves of the mean shape's passes), and order 2 elements
+  // the smallest angle of the surface triangles (degrees; of the output, after the face moves of
+  // the mean shape's passes and the surface angles' pass), and (B-rep route) order 2 elements
   // whose curved boundary edge had to be made straight to keep the Jacobian positive
   double surface_min_angle = 0;
   std::int64_t straightened_edges = 0;

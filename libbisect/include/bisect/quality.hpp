@@ -47,6 +47,9 @@ double signed_min_solid_angle_tan_half(const Vec3& a, const Vec3& b, const Vec3&
 double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c);
 // The same in degrees (the unit of the statistics and the reports).
 double triangle_min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
+// The smallest of those over the mesh's boundary and interface triangles, at their corner nodes
+// (degrees; 180 for a mesh without triangles).
+double surface_min_angle_deg(const TetMesh& mesh);
 
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
 // cancelled (optional) is asked every 4096 tetrahedra; true stops with Cancelled.

@@ -9,6 +9,7 @@
 #include "optimize/node_stars.hpp"
 #include "optimize/optimize_mesh.hpp"
 #include "optimize/sliver_repair.hpp"
+#include "optimize/surface_angles.hpp"
 #include "util/ordered_parallel.hpp"
 
 namespace bisect::optimize {
@@ -124,19 +125,6 @@ struct Move {
   Vec3 to = Vec3::Zero();
   double gain = 0;  // in the star's summed α̂
 };
-
-// The smallest angle (degrees) of the node's boundary triangles: the constrained faces at it of
-// the tetrahedra round it (input faces and interfaces); 180 when there is none.
-double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3>& X, Index node, const std::vector<Index>& around) {
-  double worst = 180;
-  for (Index t : around)
-    for (int f = 0; f < 4; ++f) {
-      if (cx.tet[t][f] == node || !cx.is_constrained(t, f)) continue;
-      const std::array<Index, 3> v = cx.face(t, f);
-      worst = std::min(worst, triangle_min_angle_deg(X[v[0]], X[v[1]], X[v[2]]));
-    }
-  return worst;
-}
 
 // Where a node that slides in its face may not take its boundary triangles' smallest angle.
 constexpr double kSlideAngleFloorDeg = 30;

@@ -11,6 +11,7 @@
 #include "optimize/min_max_passes.hpp"
 #include "optimize/node_stars.hpp"
 #include "optimize/sliver_repair.hpp"
+#include "optimize/surface_angles.hpp"
 #include "util/progress_poll.hpp"
 
 namespace bisect::optimize {
@@ -22,6 +23,9 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 // Times the passes and the sliver repair may run again round what the repair left.
 constexpr int kRepairCycles = 2;
+
+// Rounds of the surface angles' moves (surface_angles.hpp).
+constexpr int kSurfaceRounds = 2;
 
 // The slivers among `ids` (any order, repeats and dead ones allowed): the live tetrahedra with a
 // dihedral angle under kSliverBelowDeg, in id order, and the cosine of the smallest angle among
@@ -206,6 +210,8 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
     const MeanCounts mean = improve_mean(cx, X, fixed, opt.mean_rounds, threads, opt.face_moves ? slides : FaceSlides{});
     n.mean_changes = mean.flips + mean.moves;
   }
+  // the boundary triangles' smallest angles last: the mean shape's face moves only keep them
+  if (opt.face_moves && n.folds_left == 0) n.surface_moves = improve_surface_angles(cx, X, fixed, slides, kSurfaceRounds);
   n.times.mean = seconds_since(t0);
   if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
   cx.changed = outer_log;

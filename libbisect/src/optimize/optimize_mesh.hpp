@@ -22,6 +22,7 @@ inline constexpr double kSliverBelowDeg = 10;
 struct OptimizeCounts {
   std::int64_t flips = 0;         // transformations applied
   std::int64_t sliver_moves = 0;  // node moves and insertions of the sliver repair
+  std::int64_t surface_moves = 0;  // node moves for the boundary triangles' angles (surface_angles.hpp)
   std::int64_t mean_changes = 0;  // transformations and node moves of the mean-shape passes
   std::int64_t refilled_folds = 0;  // inverted tetrahedra's neighbourhoods filled again (inverted_refill.hpp)
   std::int64_t blocks = 0;          // blocks of the passes' first grid (block_pass.hpp; 0: the whole mesh on one thread)

@@ -292,6 +292,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   st->optimize_parts = oc.times;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;
+  st->surface_moves = oc.surface_moves;
   st->mean_changes = oc.mean_changes;
   st->refilled_folds = oc.refilled_folds;
   st->optimize_blocks = oc.blocks;

@@ -12,6 +12,7 @@
 #include "bisect/brep_input.hpp"  // point_name
 #include "bisect/errors.hpp"
 #include "bisect/json_text.hpp"
+#include "bisect/quality.hpp"
 #include "bisect/polyhedral_model.hpp"
 #include "domain/merge_facets.hpp"
 #include "geom/recentre.hpp"
@@ -130,6 +131,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.optimize_parts = oc.times;
   st.flips += oc.flips;
   st.sliver_moves = oc.sliver_moves;
+  st.surface_moves = oc.surface_moves;
   st.mean_changes = oc.mean_changes;
   st.refilled_folds = oc.refilled_folds;
   st.optimize_blocks = oc.blocks;
@@ -142,6 +144,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   TetMesh out = pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);
   st.nodes = static_cast<std::int64_t>(out.nodes.size());
   st.tets = static_cast<std::int64_t>(out.num_tets());
+  st.surface_min_angle = surface_min_angle_deg(out);
   st.total = since(t_all);
   if (stats) *stats = st;
   return out;
@@ -151,7 +154,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
   std::ostringstream o;
   o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
-    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes
+    << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes << ", \"surface_moves\": " << s.surface_moves
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells

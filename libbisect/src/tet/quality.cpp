@@ -37,6 +37,15 @@ double triangle_min_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 double triangle_min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return triangle_min_angle(a, b, c) * kDegrees; }
 
+double surface_min_angle_deg(const TetMesh& mesh) {
+  double worst = 180;
+  for (std::size_t t = 0; t < mesh.num_tris(); ++t) {
+    const Index* v = &mesh.tris[mesh.nodes_per_tri() * t];
+    worst = std::min(worst, triangle_min_angle_deg(mesh.nodes[v[0]], mesh.nodes[v[1]], mesh.nodes[v[2]]));
+  }
+  return worst;
+}
+
 double min_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return 2 * std::atan(min_solid_angle_tan_half(a, b, c, d));
 }

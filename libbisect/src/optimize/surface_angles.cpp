@@ -1,0 +1,151 @@
+#include "optimize/surface_angles.hpp"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+#include "bisect/quality.hpp"
+#include "optimize/node_stars.hpp"
+#include "optimize/sliver_repair.hpp"
+
+namespace bisect::optimize {
+
+using tet::positive;
+
+double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3>& X, Index node, const std::vector<Index>& around) {
+  double worst = 180;
+  for (Index t : around)
+    for (int f = 0; f < 4; ++f) {
+      if (cx.tet[t][f] == node || !cx.is_constrained(t, f)) continue;
+      const std::array<Index, 3> v = cx.face(t, f);
+      worst = std::min(worst, triangle_min_angle_deg(X[v[0]], X[v[1]], X[v[2]]));
+    }
+  return worst;
+}
+
+namespace {
+
+// The point p taken into node v's face: its plane through `old`, or the curved face itself.
+Vec3 into_face(const FaceSlides& slides, Index v, const Vec3& old, const Vec3& p) {
+  const auto i = static_cast<std::size_t>(v);
+  if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) {
+    const Vec3& n = slides.plane[i];
+    Vec3 q = p - n * n.dot(p - old);
+    // a plane normal to an axis: that coordinate exactly as it was
+    for (int k = 0; k < 3; ++k)
+      if (n[k] == 1 || n[k] == -1) q[k] = old[k];
+    return q;
+  }
+  return slides.onto(v, p, nullptr);
+}
+
+bool may_slide(const FaceSlides& slides, const std::vector<char>& fixed, Index v) {
+  const auto i = static_cast<std::size_t>(v);
+  if (i >= fixed.size() || !fixed[i]) return false;
+  if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) return true;
+  return i < slides.curved.size() && slides.curved[i] && slides.onto;
+}
+
+// One node's move (see improve_surface_angles); true when made (X[v] then holds it).
+bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceSlides& slides, Index v, const std::vector<Index>& around) {
+  // the neighbours on its boundary triangles (an interface's triangle is seen from both sides)
+  std::set<Index> ring;
+  for (Index t : around)
+    for (int f = 0; f < 4; ++f) {
+      if (cx.tet[t][f] == v || !cx.is_constrained(t, f)) continue;
+      for (Index w : cx.face(t, f))
+        if (w != v) ring.insert(w);
+    }
+  if (ring.size() < 3) return false;
+  const Vec3 old = X[v];
+  Vec3 middle = Vec3::Zero();
+  double scale = 0;
+  for (Index w : ring) middle += X[w], scale += (X[w] - old).norm();
+  middle /= static_cast<double>(ring.size());
+  scale /= static_cast<double>(ring.size());
+  const double before = smallest_boundary_angle(cx, X, v, around);
+  double star_cos = -1;  // the star's smallest dihedral angle, as a cosine
+  for (Index t : around) {
+    const Tet& u = cx.tet[t];
+    star_cos = std::max(star_cos, worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]));
+  }
+  // the smallest angle at p, or -1 where a tetrahedron would fold or lose the star's smallest
+  // dihedral angle
+  const auto angle_at = [&](const Vec3& p) {
+    X[v] = p;
+    double a = p.allFinite() ? smallest_boundary_angle(cx, X, v, around) : -1;
+    for (std::size_t i = 0; i < around.size() && a >= 0; ++i) {
+      const Tet& u = cx.tet[around[i]];
+      if (!positive(X, u) || worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) > star_cos) a = -1;
+    }
+    X[v] = old;
+    return a;
+  };
+  // the candidates: towards the neighbours' middle, and up the smallest angle's gradient in the
+  // face's tangent plane (forward differences), each at shrinking steps
+  std::vector<Vec3> towards{middle - old};
+  {
+    Vec3 normal;
+    if (static_cast<std::size_t>(v) < slides.plane.size() && slides.plane[v] != Vec3::Zero()) normal = slides.plane[v];
+    else slides.onto(v, old, &normal);
+    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    const double h = 1e-3 * scale, f0 = smallest_boundary_angle(cx, X, v, around);
+    const auto f = [&](const Vec3& e) {
+      X[v] = into_face(slides, v, old, old + h * e);
+      const double a = smallest_boundary_angle(cx, X, v, around);
+      X[v] = old;
+      return (a - f0) / h;
+    };
+    const Vec3 g = f(e1) * e1 + f(e2) * e2;
+    if (g.norm() > 0 && g.allFinite()) towards.push_back(0.5 * scale * g.normalized());
+  }
+  double best = before + 0.01;
+  Vec3 chosen = old;
+  for (const Vec3& d : towards)
+    for (double s = 1; s > 0.1; s *= 0.5) {
+      const Vec3 p = into_face(slides, v, old, old + s * d);
+      const double a = angle_at(p);
+      if (a > best) best = a, chosen = p;
+    }
+  if (chosen == old) return false;
+  X[v] = chosen;
+  return true;
+}
+
+}  // namespace
+
+std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const FaceSlides& slides,
+                                    int rounds) {
+  std::int64_t moves = 0;
+  for (int round = 0; round < rounds; ++round) {
+    // a live tetrahedron at each node that may slide and has a boundary triangle under the bar
+    std::vector<Index> at(X.size(), -1);
+    for (std::size_t t = 0; t < cx.tet.size(); ++t) {
+      cx.poll(t);
+      if (!cx.alive[t]) continue;
+      for (int f = 0; f < 4; ++f) {
+        if (!cx.is_constrained(static_cast<Index>(t), f)) continue;
+        const std::array<Index, 3> tri = cx.face(static_cast<Index>(t), f);
+        if (triangle_min_angle_deg(X[tri[0]], X[tri[1]], X[tri[2]]) >= kSurfaceWorkBelowDeg) continue;
+        for (Index w : tri)
+          if (may_slide(slides, fixed, w)) at[w] = static_cast<Index>(t);
+      }
+    }
+    std::int64_t made = 0;
+    for (std::size_t v = 0; v < at.size(); ++v) {
+      if (at[v] < 0) continue;
+      cx.poll(v);
+      // an earlier move this round may have changed the tetrahedra at v: its recorded one is
+      // still live and at v (moves change no connectivity)
+      const std::vector<Index> around = star(cx, static_cast<Index>(v), at[v]);
+      if (!move_for_the_surface(cx, X, slides, static_cast<Index>(v), around)) continue;
+      cx.moved(around);
+      ++made;
+    }
+    moves += made;
+    if (made == 0) break;
+  }
+  return moves;
+}
+
+}  // namespace bisect::optimize
