@@ -135,8 +135,7 @@ std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, c
     for (std::size_t v = 0; v < at.size(); ++v) {
       if (at[v] < 0) continue;
       cx.poll(v);
-      // an earlier move this round may have changed the tetrahedra at v: its recorded one is
-      // still live and at v (moves change no connectivity)
+      // the tetrahedron recorded at v is still live and at v: moves change positions only
       const std::vector<Index> around = star(cx, static_cast<Index>(v), at[v]);
       if (!move_for_the_surface(cx, X, slides, static_cast<Index>(v), around)) continue;
       cx.moved(around);

@@ -23,12 +23,14 @@ double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3
 inline constexpr double kSurfaceWorkBelowDeg = 25;
 
 // Up to `rounds` rounds over the nodes that `slides` lets move (fixed, inside one input face) and
-// that have a boundary triangle under kSurfaceWorkBelowDeg: each tries the middle of the node's
-// neighbours on its boundary triangles, taken into its face, then the points a half, a quarter
-// and an eighth of the way there, and makes the first move after which the smallest angle of the
-// node's boundary triangles is larger by 0.01 degrees or more, every tetrahedron round it is
-// positive, and none has a dihedral angle smaller than the star's smallest before. One thread,
-// nodes in id order: the same mesh for the same input. Returns the moves made.
+// that have a boundary triangle under kSurfaceWorkBelowDeg. Each node tries two directions in its
+// face: towards the middle of its neighbours on its boundary triangles, and up the gradient of
+// those triangles' smallest angle (forward differences in the tangent plane, a step of half the
+// neighbours' mean distance); along each the whole step, a half, a quarter and an eighth of it,
+// taken into the face. It takes the candidate with the largest smallest angle, when that is
+// larger than before by 0.01 degrees or more, every tetrahedron round it is positive, and none
+// has a dihedral angle smaller than the star's smallest before. One thread, nodes in id order:
+// the same mesh for the same input. Returns the moves made.
 std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const FaceSlides& slides,
                                     int rounds);
 
