@@ -129,9 +129,6 @@ struct Move {
 // Where a node that slides in its face may not take its boundary triangles' smallest angle.
 constexpr double kSlideAngleFloorDeg = 30;
 
-// How a fixed node may move in its face: in a plane, or on a curved face.
-enum class Slide { kNone, kPlane, kCurved };
-
 Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const std::vector<Index>& around, Slide slide,
               const FaceSlides& slides) {
   Move m;
@@ -197,20 +194,12 @@ Move try_move(const tet::TetComplex& cx, std::vector<Vec3>& X, Index node, const
 // one's move; here it sees those of the earlier colours).
 std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const FaceSlides& slides,
                         const std::vector<char>& poor, Running& run, int threads) {
-  // how a fixed node slides in its face, if it does
-  const auto slide_of = [&](Index v) {
-    const auto i = static_cast<std::size_t>(v);
-    if (i >= fixed.size() || !fixed[i]) return Slide::kNone;
-    if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) return Slide::kPlane;
-    if (i < slides.curved.size() && slides.curved[i] && slides.onto) return Slide::kCurved;
-    return Slide::kNone;
-  };
   std::vector<Index> at(X.size(), -1);  // a live poor tetrahedron at each node that may move
   for (std::size_t t = 0; t < poor.size(); ++t)
     if (cx.alive[t] && poor[t])
       for (Index v : cx.tet[t])
         // a node the sliver repair inserted has an id past `fixed`, and is free
-        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v] || slide_of(v) != Slide::kNone) at[v] = static_cast<Index>(t);
+        if (static_cast<std::size_t>(v) >= fixed.size() || !fixed[v] || slide_of(slides, fixed, v) != Slide::kNone) at[v] = static_cast<Index>(t);
   std::vector<Index> nodes;
   for (std::size_t v = 0; v < X.size(); ++v)
     if (at[v] >= 0) nodes.push_back(static_cast<Index>(v));
@@ -241,7 +230,7 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
   for (const std::vector<std::size_t>& group : by_colour) {
     tried.assign(group.size(), Move{});
     util::ordered_parallel(
-        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]], slide_of(nodes[group[k]]), slides); },
+        group.size(), workers, [&](std::size_t k) { tried[k] = try_move(cx, X, nodes[group[k]], stars[group[k]], slide_of(slides, fixed, nodes[group[k]]), slides); },
         [&](std::size_t k) {
           const std::size_t i = group[k];
           cx.poll(i);
@@ -256,6 +245,14 @@ std::int64_t move_nodes(tet::TetComplex& cx, std::vector<Vec3>& X, const std::ve
 }
 
 }  // namespace
+
+Slide slide_of(const FaceSlides& slides, const std::vector<char>& fixed, Index v) {
+  const auto i = static_cast<std::size_t>(v);
+  if (i >= fixed.size() || !fixed[i]) return Slide::kNone;
+  if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) return Slide::kPlane;
+  if (i < slides.curved.size() && slides.curved[i] && slides.onto) return Slide::kCurved;
+  return Slide::kNone;
+}
 
 Vec3 slide_normal(const Vec3& n) {
   if (!(std::abs(n.norm() - 1) < 1e-6)) return Vec3::Zero();

@@ -35,6 +35,11 @@ struct FaceSlides {
   std::function<Vec3(Index v, const Vec3& p, Vec3* normal)> onto;
 };
 
+// How node v may move in its face: not at all (a free node, or a fixed one `slides` names no face
+// for), in a plane, or on a curved face.
+enum class Slide { kNone, kPlane, kCurved };
+Slide slide_of(const FaceSlides& slides, const std::vector<char>& fixed, Index v);
+
 // A face's unit normal as FaceSlides::plane holds it: one within round-off of an axis made exactly
 // that axis (so that a move in the plane leaves that coordinate as it was); zero when n is not a
 // unit vector.

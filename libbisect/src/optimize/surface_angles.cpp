@@ -26,28 +26,19 @@ double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3
 namespace {
 
 // The point p taken into node v's face: its plane through `old`, or the curved face itself.
-Vec3 into_face(const FaceSlides& slides, Index v, const Vec3& old, const Vec3& p) {
-  const auto i = static_cast<std::size_t>(v);
-  if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) {
-    const Vec3& n = slides.plane[i];
-    Vec3 q = p - n * n.dot(p - old);
-    // a plane normal to an axis: that coordinate exactly as it was
-    for (int k = 0; k < 3; ++k)
-      if (n[k] == 1 || n[k] == -1) q[k] = old[k];
-    return q;
-  }
-  return slides.onto(v, p, nullptr);
-}
-
-bool may_slide(const FaceSlides& slides, const std::vector<char>& fixed, Index v) {
-  const auto i = static_cast<std::size_t>(v);
-  if (i >= fixed.size() || !fixed[i]) return false;
-  if (i < slides.plane.size() && slides.plane[i] != Vec3::Zero()) return true;
-  return i < slides.curved.size() && slides.curved[i] && slides.onto;
+Vec3 into_face(const FaceSlides& slides, Slide slide, Index v, const Vec3& old, const Vec3& p) {
+  if (slide == Slide::kCurved) return slides.onto(v, p, nullptr);
+  const Vec3& n = slides.plane[v];
+  Vec3 q = p - n * n.dot(p - old);
+  // a plane normal to an axis: that coordinate exactly as it was
+  for (int k = 0; k < 3; ++k)
+    if (n[k] == 1 || n[k] == -1) q[k] = old[k];
+  return q;
 }
 
 // One node's move (see improve_surface_angles); true when made (X[v] then holds it).
-bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceSlides& slides, Index v, const std::vector<Index>& around) {
+bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceSlides& slides, Slide slide, Index v,
+                          const std::vector<Index>& around) {
   // the neighbours on its boundary triangles (an interface's triangle is seen from both sides)
   std::set<Index> ring;
   for (Index t : around)
@@ -86,15 +77,15 @@ bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceS
   std::vector<Vec3> towards{middle - old};
   {
     Vec3 normal;
-    if (static_cast<std::size_t>(v) < slides.plane.size() && slides.plane[v] != Vec3::Zero()) normal = slides.plane[v];
+    if (slide == Slide::kPlane) normal = slides.plane[v];
     else slides.onto(v, old, &normal);
     const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
-    const double h = 1e-3 * scale, f0 = smallest_boundary_angle(cx, X, v, around);
+    const double h = 1e-3 * scale;
     const auto f = [&](const Vec3& e) {
-      X[v] = into_face(slides, v, old, old + h * e);
+      X[v] = into_face(slides, slide, v, old, old + h * e);
       const double a = smallest_boundary_angle(cx, X, v, around);
       X[v] = old;
-      return (a - f0) / h;
+      return (a - before) / h;
     };
     const Vec3 g = f(e1) * e1 + f(e2) * e2;
     if (g.norm() > 0 && g.allFinite()) towards.push_back(0.5 * scale * g.normalized());
@@ -103,7 +94,7 @@ bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceS
   Vec3 chosen = old;
   for (const Vec3& d : towards)
     for (double s = 1; s > 0.1; s *= 0.5) {
-      const Vec3 p = into_face(slides, v, old, old + s * d);
+      const Vec3 p = into_face(slides, slide, v, old, old + s * d);
       const double a = angle_at(p);
       if (a > best) best = a, chosen = p;
     }
@@ -128,7 +119,7 @@ std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, c
         const std::array<Index, 3> tri = cx.face(static_cast<Index>(t), f);
         if (triangle_min_angle_deg(X[tri[0]], X[tri[1]], X[tri[2]]) >= kSurfaceWorkBelowDeg) continue;
         for (Index w : tri)
-          if (may_slide(slides, fixed, w)) at[w] = static_cast<Index>(t);
+          if (slide_of(slides, fixed, w) != Slide::kNone) at[w] = static_cast<Index>(t);
       }
     }
     std::int64_t made = 0;
@@ -137,7 +128,7 @@ std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, c
       cx.poll(v);
       // the tetrahedron recorded at v is still live and at v: moves change positions only
       const std::vector<Index> around = star(cx, static_cast<Index>(v), at[v]);
-      if (!move_for_the_surface(cx, X, slides, static_cast<Index>(v), around)) continue;
+      if (!move_for_the_surface(cx, X, slides, slide_of(slides, fixed, static_cast<Index>(v)), static_cast<Index>(v), around)) continue;
       cx.moved(around);
       ++made;
     }

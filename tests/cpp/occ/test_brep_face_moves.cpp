@@ -21,13 +21,11 @@
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
-#include "mesh_measures.hpp"
 #include "occ_checks.hpp"
 #include "occ_shapes.hpp"
 
 namespace bisect {
 namespace {
-using test::surface_min_angle;
 
 // [0,2] x [0,1] x [0,1] less [0.25,1.75] x [0.25,0.75] x [0.25,0.75]: the planes of its faces
 BrepInput hollow_box() {
@@ -127,8 +125,8 @@ TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {
   EXPECT_LE(static_cast<std::int64_t>(straight.size()), st[1].straightened_edges);
   EXPECT_GT(on_sphere, 100u);
   EXPECT_GT(moved, 10u);
-  EXPECT_GE(surface_min_angle(m[1]), std::min(surface_min_angle(m[0]), 30.0) - 1e-9);
-  RecordProperty("surface_min_angle", std::to_string(surface_min_angle(m[0])) + " -> " + std::to_string(surface_min_angle(m[1])));
+  EXPECT_GE(surface_min_angle_deg(m[1]), std::min(surface_min_angle_deg(m[0]), 30.0) - 1e-9);
+  RecordProperty("surface_min_angle", std::to_string(surface_min_angle_deg(m[0])) + " -> " + std::to_string(surface_min_angle_deg(m[1])));
 }
 
 }  // namespace

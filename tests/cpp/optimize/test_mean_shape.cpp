@@ -12,7 +12,6 @@
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
-#include "mesh_measures.hpp"
 #include "optimize/grid_cube.hpp"
 #include "optimize/mean_shape.hpp"
 #include "optimize/sliver_repair.hpp"
@@ -24,7 +23,6 @@ namespace {
 
 using tet::Tet;
 using tet::TetComplex;
-using test::surface_min_angle;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -187,7 +185,7 @@ TEST(MeanShape, NodesInsideFlatFacesMoveInTheirPlanesOnly) {
     EXPECT_GT(moved, face_nodes / 20) << elements;
     EXPECT_GT(q[1].alpha.mean, q[0].alpha.mean + 0.0008) << elements;
     EXPECT_GE(q[1].dihedral_min.min, std::min(q[0].dihedral_min.min, 10.5)) << elements;
-    EXPECT_GE(surface_min_angle(m[1]), std::min(surface_min_angle(m[0]), 30.0) - 1e-9) << elements;
+    EXPECT_GE(surface_min_angle_deg(m[1]), std::min(surface_min_angle_deg(m[0]), 30.0) - 1e-9) << elements;
     RecordProperty("alpha_mean_" + std::to_string(elements), std::to_string(q[0].alpha.mean) + " -> " + std::to_string(q[1].alpha.mean));
   }
 }

@@ -10,7 +10,6 @@
 #include "bisect/generate.hpp"
 #include "bisect/quality.hpp"
 #include "bisect/validate.hpp"
-#include "mesh_measures.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "optimize/surface_angles.hpp"
 #include "poly_shapes.hpp"
@@ -161,7 +160,7 @@ TEST(SurfaceAngles, ThroughTheGeneratorThePlatesSurfaceReachesTwentyDegrees) {
       GenerateStats st;
       const TetMesh m = generate_mesh(in, opt, &st);
       EXPECT_TRUE(validate(m).empty()) << elements;
-      surface[moves] = test::surface_min_angle(m);
+      surface[moves] = surface_min_angle_deg(m);
       if (moves == 1) {
         EXPECT_NEAR(st.surface_min_angle, surface[1], 1e-9) << elements;
       }
