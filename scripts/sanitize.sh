@@ -33,6 +33,8 @@ start=$(date +%s)
 SAN="-fsanitize=address,undefined -fno-sanitize=null,pointer-overflow,alignment -fno-sanitize-recover=all -fno-omit-frame-pointer"
 LAUNCHER=()
 command -v ccache >/dev/null 2>&1 && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# ccache caches a compile that reads a precompiled header (BISECTMESH_PCH) only with this
+export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros}
 mkdir -p "$BUILD"
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DBISECTMESH_FUZZ_REPLAY=ON \
   -DCMAKE_CXX_FLAGS="$SAN" -DCMAKE_EXE_LINKER_FLAGS="$SAN" -DCMAKE_SHARED_LINKER_FLAGS="$SAN" \
