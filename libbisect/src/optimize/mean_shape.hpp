@@ -33,11 +33,20 @@ struct FaceSlides {
   // for such a node v: the point of its face nearest p, and (when normal is not null) the face's
   // unit normal there; called from several threads at once
   std::function<Vec3(Index v, const Vec3& p, Vec3* normal)> onto;
+  // per node (may be shorter than X): it lies inside a B-rep edge (not at a vertex), along which
+  // `along` keeps it. Only the surface angles' pass (surface_angles.hpp) moves such nodes: the
+  // mean shape's face moves leave them where the edge grids put them.
+  std::vector<char> edge;
+  // for such a node v: the point of its edge nearest p, and (when tangent is not null) the edge's
+  // unit tangent there; not finite where p is nearer another part of the edge than v's own (a
+  // closed edge's far end)
+  std::function<Vec3(Index v, const Vec3& p, Vec3* tangent)> along;
 };
 
 // How node v may move in its face: not at all (a free node, or a fixed one `slides` names no face
-// for), in a plane, or on a curved face.
-enum class Slide { kNone, kPlane, kCurved };
+// for), in a plane, or on a curved face. (kEdge, along a B-rep edge, is the surface angles' pass's
+// own: slide_of never answers it.)
+enum class Slide { kNone, kPlane, kCurved, kEdge };
 Slide slide_of(const FaceSlides& slides, const std::vector<char>& fixed, Index v);
 
 // A face's unit normal as FaceSlides::plane holds it: one within round-off of an axis made exactly

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 
 #include "bisect/quality.hpp"
@@ -25,9 +26,19 @@ double smallest_boundary_angle(const tet::TetComplex& cx, const std::vector<Vec3
 
 namespace {
 
-// The point p taken into node v's face: its plane through `old`, or the curved face itself.
+// How node v may move for the surface: as slide_of says, or else along its B-rep edge.
+Slide surface_slide_of(const FaceSlides& slides, const std::vector<char>& fixed, Index v) {
+  const Slide slide = slide_of(slides, fixed, v);
+  const auto i = static_cast<std::size_t>(v);
+  if (slide == Slide::kNone && i < fixed.size() && fixed[i] && i < slides.edge.size() && slides.edge[i] && slides.along) return Slide::kEdge;
+  return slide;
+}
+
+// The point p taken into node v's face (its plane through `old`, or the curved face itself), or
+// onto its B-rep edge.
 Vec3 into_face(const FaceSlides& slides, Slide slide, Index v, const Vec3& old, const Vec3& p) {
   if (slide == Slide::kCurved) return slides.onto(v, p, nullptr);
+  if (slide == Slide::kEdge) return slides.along(v, p, nullptr);
   const Vec3& n = slides.plane[v];
   Vec3 q = p - n * n.dot(p - old);
   // a plane normal to an axis: that coordinate exactly as it was
@@ -55,27 +66,39 @@ bool move_for_the_surface(tet::TetComplex& cx, std::vector<Vec3>& X, const FaceS
   middle /= static_cast<double>(ring.size());
   scale /= static_cast<double>(ring.size());
   const double before = smallest_boundary_angle(cx, X, v, around);
-  double star_cos = -1;  // the star's smallest dihedral angle, as a cosine
-  for (Index t : around) {
-    const Tet& u = cx.tet[t];
-    star_cos = std::max(star_cos, worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]));
+  // each tetrahedron's bar, as a cosine: its own smallest dihedral angle before, or, when that
+  // is larger, the star's smallest or kSurfaceDihedralBarDeg, whichever is larger (a move may
+  // trade a good tetrahedron's angle down to the bar, never a poor one's further down)
+  std::vector<double> bar_cos(around.size());
+  double star_cos = -1;
+  for (std::size_t i = 0; i < around.size(); ++i) {
+    const Tet& u = cx.tet[around[i]];
+    bar_cos[i] = worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]);
+    star_cos = std::max(star_cos, bar_cos[i]);
   }
-  // the smallest angle at p, or -1 where a tetrahedron would fold or lose the star's smallest
-  // dihedral angle
+  const double floor_cos = std::min(star_cos, std::cos(kSurfaceDihedralBarDeg * M_PI / 180));
+  for (double& c : bar_cos) c = std::max(c, floor_cos);
+  // the smallest angle at p, or -1 where a tetrahedron would fold or fall under its bar
   const auto angle_at = [&](const Vec3& p) {
     X[v] = p;
     double a = p.allFinite() ? smallest_boundary_angle(cx, X, v, around) : -1;
     for (std::size_t i = 0; i < around.size() && a >= 0; ++i) {
       const Tet& u = cx.tet[around[i]];
-      if (!positive(X, u) || worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) > star_cos) a = -1;
+      if (!positive(X, u) || worst_dihedral_cos(X[u[0]], X[u[1]], X[u[2]], X[u[3]]) > bar_cos[i]) a = -1;
     }
     X[v] = old;
     return a;
   };
   // the candidates: towards the neighbours' middle, and up the smallest angle's gradient in the
-  // face's tangent plane (forward differences), each at shrinking steps
+  // face's tangent plane (forward differences), each at shrinking steps; on an edge, along its
+  // tangent either way
   std::vector<Vec3> towards{middle - old};
-  {
+  if (slide == Slide::kEdge) {
+    Vec3 tangent;
+    slides.along(v, old, &tangent);
+    towards.clear();
+    if (tangent.allFinite()) towards = {0.5 * scale * tangent, -0.5 * scale * tangent};
+  } else {
     Vec3 normal;
     if (slide == Slide::kPlane) normal = slides.plane[v];
     else slides.onto(v, old, &normal);
@@ -119,7 +142,7 @@ std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, c
         const std::array<Index, 3> tri = cx.face(static_cast<Index>(t), f);
         if (triangle_min_angle_deg(X[tri[0]], X[tri[1]], X[tri[2]]) >= kSurfaceWorkBelowDeg) continue;
         for (Index w : tri)
-          if (slide_of(slides, fixed, w) != Slide::kNone) at[w] = static_cast<Index>(t);
+          if (surface_slide_of(slides, fixed, w) != Slide::kNone) at[w] = static_cast<Index>(t);
       }
     }
     std::int64_t made = 0;
@@ -128,7 +151,7 @@ std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, c
       cx.poll(v);
       // the tetrahedron recorded at v is still live and at v: moves change positions only
       const std::vector<Index> around = star(cx, static_cast<Index>(v), at[v]);
-      if (!move_for_the_surface(cx, X, slides, slide_of(slides, fixed, static_cast<Index>(v)), static_cast<Index>(v), around)) continue;
+      if (!move_for_the_surface(cx, X, slides, surface_slide_of(slides, fixed, static_cast<Index>(v)), static_cast<Index>(v), around)) continue;
       cx.moved(around);
       ++made;
     }

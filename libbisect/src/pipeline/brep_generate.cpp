@@ -4,6 +4,7 @@
 // optimisation, the mesh assembly and, for order 2, the curved mid-nodes.
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <cstdio>
 #include <cmath>
@@ -236,12 +237,30 @@ optimize::FaceSlides face_slides(const BrepInput& in, const pipeline::BrepGrids&
     if (normal) *normal = surf.normal(at);
     return surf.point(at);
   };
+  // nodes inside B-rep edges, for the surface angles' pass: along the edge's curve from the
+  // node's own parameter, never across to a closed edge's far end
+  s.edge.assign(n, 0);
+  auto edge = std::make_shared<std::vector<Index>>(n, -1);
+  auto param = std::make_shared<std::vector<double>>(n, 0.0);
+  for (std::size_t v = 0; v < n; ++v) {
+    const pipeline::PointOn& on = grids.nodes.on[v];
+    if (on.kind != pipeline::PointOn::kEdge || in.edges[on.id].degenerate || !in.edges[on.id].curve) continue;
+    s.edge[v] = 1;
+    (*edge)[v] = on.id, (*param)[v] = on.t;
+  }
+  s.along = [&in, edge, param](Index v, const Vec3& p, Vec3* tangent) -> Vec3 {
+    const ParametricCurve& curve = *in.edges[(*edge)[v]].curve;
+    const double was = (*param)[v], t = curve.closest_parameter(p, was);
+    if (std::abs(t - was) > 0.25 * (curve.t_max() - curve.t_min())) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    if (tangent) *tangent = curve.derivative(t).normalized();
+    return curve.point(t);
+  };
   return s;
 }
 
-// After the optimisation: the (u, v) of every corner whose node slid in its face, from its
-// new position (the order-2 mid-nodes are placed from them), the grids' own copy of it, and their
-// smallest angle (degrees) as the moves left it.
+// After the optimisation: the (u, v) of every corner whose node slid in its face or along its
+// edge, and such a node's edge parameter, from its new position (the order-2 mid-nodes are placed
+// from them), the grids' own copy of it, and their smallest angle (degrees) as the moves left it.
 void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pipeline::BrepPlacement* best) {
   double smallest = 180;
   for (pipeline::FacePiece& piece : best->grids.pieces) {
@@ -255,6 +274,10 @@ void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pip
         piece.tri_uv[k][i] = surf.closest_point(best->X[v], piece.tri_uv[k][i]);
         best->grids.nodes.x[v] = best->X[v];
       }
+  }
+  for (std::size_t v = 0; v < before.size(); ++v) {
+    pipeline::PointOn& on = best->grids.nodes.on[v];
+    if (on.kind == pipeline::PointOn::kEdge && best->X[v] != before[v]) on.t = in.edges[on.id].curve->closest_parameter(best->X[v], on.t);
   }
   best->grids.min_angle_deg = smallest;
 }

@@ -5,7 +5,8 @@
 // where the nodes went (the middle of the edge on a flat face), so every element stays positive
 // at its corners and Gauss points. On a box with a spherical cavity, the nodes that move on the
 // sphere stay on it, mid-nodes included (but those of straightened edges, at their chords'
-// middles), and the surface's smallest angle stays at least what it was or 30 degrees.
+// middles), the nodes of its seam and of the box's edges move along them only (their mid-nodes
+// on them), and the surface's smallest angle stays at least what it was or 30 degrees.
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
@@ -91,7 +92,7 @@ TEST(BrepFaceMoves, NodesSlideInTheirPlanesAndTheMidNodesFollow) {
   EXPECT_GT(moved, 20u);
 }
 
-TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {
+TEST(BrepFaceMoves, NodesOnACurvedFaceAndItsEdgesStayOnThem) {
   BothWays both(test::input_of(test::make_box_with_cavity(), "box with a spherical cavity"), 3000);
   const TetMesh* m = both.m;
   const GenerateStats* st = both.st;
@@ -125,6 +126,72 @@ TEST(BrepFaceMoves, NodesOnACurvedFaceStayOnIt) {
   EXPECT_LE(static_cast<std::int64_t>(straight.size()), st[1].straightened_edges);
   EXPECT_GT(on_sphere, 100u);
   EXPECT_GT(moved, 10u);
+
+  // Nodes inside the B-rep edges (the box's twelve, the sphere's seam: its meridian at y = 2,
+  // x > 2) move along them only, and the mid-node of a mesh edge that runs along one (between
+  // two of its nodes with none of its nodes between them) lies on it, between them.
+  struct OnEdge {
+    int edge = -1;  // 0-11 the box's, 12 the seam; -1 none (or a vertex)
+    double t = 0;   // the free coordinate on the box's, the angle from the equator on the seam
+  };
+  const auto edge_of = [&](const Vec3& p) {
+    OnEdge on;
+    int bounding = 0, free = -1, code = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(p[k]) < 1e-12 || std::abs(p[k] - 4) < 1e-12) ++bounding, code = 2 * code + (p[k] > 2);
+      else free = k;
+    }
+    if (bounding == 2) on.edge = 4 * free + code, on.t = p[free];
+    const Vec3 d = p - centre;
+    if (std::abs(d.norm() - 1) < 1e-9 && std::abs(d.y()) < 1e-9 && d.x() > 1e-9) on.edge = 12, on.t = std::atan2(d.z(), d.x());
+    return on;
+  };
+  // (the two meshes number their nodes differently: each edge's nodes are compared as sets)
+  std::array<std::vector<double>, 13> params[2];  // the corners' parameters on each edge
+  std::set<std::array<double, 3>> seam_before;
+  for (int w : {0, 1})
+    for (std::size_t t = 0; t < m[w].num_tris(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const Index v = m[w].tris[6 * t + i];
+        const OnEdge on = edge_of(m[w].nodes[v]);
+        if (on.edge < 0) continue;
+        params[w][on.edge].push_back(on.t);
+        if (on.edge == 12 && w == 0) seam_before.insert({m[w].nodes[v].x(), m[w].nodes[v].y(), m[w].nodes[v].z()});
+      }
+  std::size_t edge_nodes = 0, seam_moved = 0, along_mids = 0;
+  for (int e = 0; e < 13; ++e)
+    for (auto& p : params) {
+      std::sort(p[e].begin(), p[e].end());
+      p[e].erase(std::unique(p[e].begin(), p[e].end()), p[e].end());
+    }
+  for (int e = 0; e < 13; ++e) {
+    EXPECT_EQ(params[1][e].size(), params[0][e].size()) << "edge " << e << ": nodes came onto it or left it";
+    edge_nodes += params[1][e].size();
+  }
+  std::set<Index> seam_corners;
+  for (std::size_t t = 0; t < b.num_tris(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = b.nodes[b.tris[6 * t + i]];
+      if (edge_of(p).edge == 12 && !seam_before.count({p.x(), p.y(), p.z()})) seam_corners.insert(b.tris[6 * t + i]);
+    }
+  seam_moved = seam_corners.size();
+  for (std::size_t t = 0; t < b.num_tris(); ++t) {
+    const Index* c = &b.tris[6 * t];
+    for (int k = 0; k < 3; ++k) {
+      const OnEdge a = edge_of(b.nodes[c[kTriEdge[k][0]]]), z = edge_of(b.nodes[c[kTriEdge[k][1]]]);
+      if (a.edge < 0 || z.edge != a.edge || straight.count(c[3 + k])) continue;
+      const double lo = std::min(a.t, z.t), hi = std::max(a.t, z.t);
+      if (std::any_of(params[1][a.edge].begin(), params[1][a.edge].end(), [&](double u) { return u > lo + 1e-12 && u < hi - 1e-12; })) continue;
+      ++along_mids;
+      const OnEdge mid = edge_of(b.nodes[c[3 + k]]);
+      EXPECT_EQ(mid.edge, a.edge) << "mid-node " << c[3 + k];
+      EXPECT_TRUE(mid.t > lo && mid.t < hi) << "mid-node " << c[3 + k] << " is not between its corners";
+    }
+  }
+  EXPECT_GT(edge_nodes, 20u);
+  EXPECT_GT(along_mids, 20u);
+  EXPECT_GT(seam_moved, 0u);
+  RecordProperty("seam_nodes_moved", std::to_string(seam_moved));
   EXPECT_GE(surface_min_angle_deg(m[1]), std::min(surface_min_angle_deg(m[0]), 30.0) - 1e-9);
   RecordProperty("surface_min_angle", std::to_string(surface_min_angle_deg(m[0])) + " -> " + std::to_string(surface_min_angle_deg(m[1])));
 }
