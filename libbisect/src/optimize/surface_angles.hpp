@@ -3,8 +3,8 @@
 // triangles' smallest angle; where the face grids met at the decomposition's cuts, or where the
 // morph onto a curved face bent them, a triangle under 20 degrees can stay (sphere-in-box at its
 // floor: 15.7 degrees on the sphere, at its seam). This pass moves such a triangle's nodes within
-// their faces, and along their B-rep edges, for the triangles' sake, while every tetrahedron
-// round the node keeps the smallest dihedral angle its star had.
+// their faces, and along their B-rep edges, for the triangles' sake, while no tetrahedron round
+// the node falls under its bar (kSurfaceDihedralBarDeg).
 #pragma once
 #include <cstdint>
 #include <vector>
