@@ -110,6 +110,7 @@ struct GenerateStats {
   std::int64_t sliver_moves = 0;      // node moves of the sliver repair
   std::int64_t mean_changes = 0;      // transformations and node moves of the mean-shape passes
   std::int64_t surface_moves = 0;     // node moves within faces for the boundary triangles' angles
+  std::int64_t surface_flips = 0;     // B-rep: edge flips within faces for the boundary triangles' angles
   std::int64_t fillings = 0;          // times the cells were filled while the count was sought
   std::int64_t graded_nodes = 0;      // interior nodes placed by the grading from fine boundary spacing
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the

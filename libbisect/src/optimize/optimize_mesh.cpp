@@ -71,6 +71,7 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
   OptimizeCounts n;
   FaceSlides slides;
   if (filled) slides = std::move(filled->slides);
+  const bool trades = filled && filled->surface_trades;
   // Stop within a pass: the loops poll cx.cancelled, which calls progress now and then
   util::ProgressPoll poll(progress);
   const std::function<bool()> outer_cancelled = cx.cancelled;
@@ -211,7 +212,7 @@ OptimizeCounts optimise(tet::TetComplex& cx, FilledMesh* filled, std::vector<Vec
     n.mean_changes = mean.flips + mean.moves;
   }
   // the boundary triangles' smallest angles last: the mean shape's face moves only keep them
-  if (opt.face_moves && n.folds_left == 0) n.surface_moves = improve_surface_angles(cx, X, fixed, slides, kSurfaceRounds);
+  if (opt.face_moves && n.folds_left == 0) n.surface_moves = improve_surface_angles(cx, X, fixed, slides, kSurfaceRounds, trades);
   n.times.mean = seconds_since(t0);
   if (outer_log) outer_log->insert(outer_log->end(), changed.begin(), changed.end());
   cx.changed = outer_log;

@@ -45,6 +45,9 @@ struct FilledMesh {
   FaceTags surface_tag;     // the outer boundary's faces with their input face (TetComplex::surface_tag)
   // the fixed nodes the mean shape's passes may move within their input faces (mean_shape.hpp)
   FaceSlides slides;
+  // the surface angles' pass may trade tetrahedra's angles for triangles under 20 degrees
+  // (surface_angles.hpp: the B-rep route)
+  bool surface_trades = false;
 };
 
 // The same from the fill's output: the transformation and smoothing passes in blocks on `threads`

@@ -17,6 +17,7 @@
 #include "optimize/inverted_refill.hpp"
 #include "optimize/mean_shape.hpp"
 #include "optimize/optimize_mesh.hpp"
+#include "optimize/surface_angles.hpp"
 #include "pipeline/brep_bodies.hpp"
 #include "pipeline/brep_boundary.hpp"
 #include "pipeline/brep_closure.hpp"
@@ -24,6 +25,7 @@
 #include "pipeline/brep_grids.hpp"
 #include "pipeline/brep_order2.hpp"
 #include "pipeline/brep_proxy.hpp"
+#include "pipeline/brep_surface_flips.hpp"
 #include "pipeline/cell_filling.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/node_placement.hpp"
@@ -282,6 +284,10 @@ void follow_slid_nodes(const BrepInput& in, const std::vector<Vec3>& before, pip
   best->grids.min_angle_deg = smallest;
 }
 
+// The surface's edge flips and the moves after them: goes of both, and rounds within each.
+constexpr int kSurfaceFlipGoes = 2;
+constexpr int kSurfaceFlipRounds = 2;
+
 // The global optimisation (7.5 over the whole mesh) and the output's assembly, checked: a
 // tetrahedron inside out is a MeshingError naming the place, never a mesh.
 TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, pipeline::BrepPlacement* best, pipeline::FilledCells& filled,
@@ -302,6 +308,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
     }
   // nodes inside a B-rep face may move in it in the passes for the mean shape
   mesh.slides = face_slides(in, best->grids);
+  mesh.surface_trades = true;
   const std::vector<Vec3> before(best->X.begin(), best->X.begin() + static_cast<std::ptrdiff_t>(mesh.slides.plane.size()));
   // the surface grid is the true surface's: it stays as meshed (no 2-2 transformation)
   OptimizeOptions oo = opt.optimize;
@@ -310,12 +317,21 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   if (progress) optimize_progress = [&](double x) { return progress(kBar.filled + (kBar.optimized - kBar.filled) * x); };
   const optimize::OptimizeCounts oc =
       optimize::optimize_filled(cx, std::move(mesh), best->X, best->on_boundary, oo, optimize_progress, opt.threads);
+  st->surface_moves = oc.surface_moves;
+  // what node moves cannot mend, edge flips within the faces (brep_surface_flips.hpp), and the
+  // surface angles' moves again round what they changed, while the flips find something
+  if (oo.face_moves && oc.folds_left == 0)
+    for (int go = 0; go < kSurfaceFlipGoes; ++go) {
+      const std::int64_t flips = pipeline::flip_surface_edges(in, best->grids, cx, best->X, kSurfaceFlipRounds);
+      st->surface_flips += flips;
+      if (flips == 0) break;
+      st->surface_moves += optimize::improve_surface_angles(cx, best->X, best->on_boundary, face_slides(in, best->grids), kSurfaceFlipRounds, true);
+    }
   follow_slid_nodes(in, before, best);
   st->surface_min_angle = best->grids.min_angle_deg;
   st->optimize_parts = oc.times;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;
-  st->surface_moves = oc.surface_moves;
   st->mean_changes = oc.mean_changes;
   st->refilled_folds = oc.refilled_folds;
   st->optimize_blocks = oc.blocks;

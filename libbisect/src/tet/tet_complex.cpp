@@ -157,7 +157,7 @@ void TetComplex::constrain(const std::unordered_set<FaceKey, FaceKeyHash>& faces
   });
 }
 
-void TetComplex::undo(std::vector<Replacement>& entries) {
+void TetComplex::undo(std::vector<Replacement>& entries, const std::vector<Index>* among) {
   std::vector<Replacement>* const keep = journal;
   journal = nullptr;  // the undoing is not journalled
   // the tetrahedra by their nodes, not their ids: an id freed by a later change may have been
@@ -166,11 +166,19 @@ void TetComplex::undo(std::vector<Replacement>& entries) {
   const auto key = [](const Tet& t) { return face_key(t[0], t[1], t[2]); };
   for (const Replacement& r : entries)
     for (const Tet& t : r.made) where[key(t)];
-  for (std::size_t t = 0; t < tet.size(); ++t)
-    if (alive[t]) {
-      const auto it = where.find(key(tet[t]));
-      if (it != where.end()) it->second.push_back({tet[t], static_cast<Index>(t)});
-    }
+  const auto look = [&](Index t) {
+    if (!alive[t]) return;
+    const auto it = where.find(key(tet[t]));
+    if (it != where.end()) it->second.push_back({tet[t], t});
+  };
+  if (among) {
+    std::vector<Index> ids = *among;  // once each
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for (Index t : ids) look(t);
+  } else {
+    for (std::size_t t = 0; t < tet.size(); ++t) look(static_cast<Index>(t));
+  }
   const auto id_of = [&](const Tet& t) {
     for (const auto& [u, id] : where[key(t)])
       if (u == t && alive[id] && tet[id] == t) return id;
@@ -225,6 +233,12 @@ std::array<Index, 3> TetComplex::face(Index t, int f) const {
 }
 
 bool TetComplex::is_constrained(Index t, int f) const { return nb[t][f] < 0 || (cmask_[t] >> f & 1u); }
+
+void TetComplex::hold(Index t, int f) {
+  cmask_[t] |= static_cast<unsigned char>(1u << f);
+  const Index n = nb[t][f];
+  if (n >= 0) cmask_[n] |= static_cast<unsigned char>(1u << face_towards(n, t));
+}
 
 int TetComplex::corner_of(Index t, Index v) const {
   for (int k = 0; k < 4; ++k)
@@ -357,7 +371,10 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     if (s.first < 0) continue;
     const Side& a = sides[s.first];
     const bool fresh = a.fresh || (s.second >= 0 && sides[s.second].fresh);
-    if (!fresh) continue;  // an old face no new tetrahedron took up
+    if (!fresh) {  // an old face no new tetrahedron took up: with new_boundary, the outer boundary
+      if (new_boundary && s.second < 0 && a.t >= 0) nb[a.t][a.f] = -1;
+      continue;
+    }
     if (s.second < 0 && new_boundary) continue;  // a new face of the outer boundary
     if (s.second < 0 || s.more > 1) {
       // a new face that meets nothing, or three sides on one triangle: the new set does not meet

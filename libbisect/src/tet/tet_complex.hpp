@@ -82,7 +82,9 @@ class TetComplex {
     std::vector<Index> old_tags;
   };
   std::vector<Replacement>* journal = nullptr;
-  void undo(std::vector<Replacement>& entries);
+  // among: when given, the ids the journalled changes made are all in it (the `touched` log of
+  // a local change), and only those are searched, not the whole complex.
+  void undo(std::vector<Replacement>& entries, const std::vector<Index>* among = nullptr);
   // When set, the long loops (the transformations' queue, the smoothing, the sliver repair) call
   // it now and then (every kPollEvery steps); true stops them with Cancelled. The optimiser sets
   // it from the progress callback, so that Stop takes effect within a pass.
@@ -108,12 +110,17 @@ class TetComplex {
 
   // Swaps the tetrahedra `old` for `fresh` (same region of space). Returns the new ids.
   // new_boundary: faces of `fresh` that match nothing are outer boundary (the 2-2
-  // transformation re-triangulates it), else that is an error.
+  // transformation re-triangulates it), else that is an error; and an old set's outside face
+  // that no new one takes up becomes the outer boundary of the tetrahedron beyond it (a
+  // tetrahedron with two faces on the boundary taken out: the surface's edge flips).
   std::vector<Index> replace(const std::vector<Index>& old, const std::vector<Tet>& fresh, bool new_boundary = false);
 
   // Face f's nodes, ordered so that their right-hand normal points out of t.
   std::array<Index, 3> face(Index t, int f) const;
   bool is_constrained(Index t, int f) const;
+  // Marks face f of t, and the same face of the tetrahedron across it, as constrained (a face a
+  // change made where one was before: an interface's triangles after an edge flip on it).
+  void hold(Index t, int f);
   int corner_of(Index t, Index v) const;  // -1 when v is not a corner
   std::vector<Index> tets_at(Index v) const;  // the live tetrahedra with corner v (a full scan)
   // The live tetrahedra with corner v, found from t0 (one of them) across the faces at v, in
@@ -166,6 +173,13 @@ class TetComplex {
   // besides a and b. `closed`: the ring closes (an interior edge); `held`: it ends at a
   // constrained face (the edge lies on one).
   int edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index* apex, bool* closed, bool* held) const;
+  // The ring polygon p[0..k) around edge (a, b) (k <= kMaxRing) triangulated at its best by
+  // dynamic programming, every tetrahedron's key above `need`: each triangle joined to a and to b,
+  // the tetrahedra into `fresh`; false when none is. The polygon's side p[k-1] p[0] may be a chord
+  // of an open ring (an edge on the boundary: the surface's edge flips take the edge (a, b) out
+  // of the boundary that way, pipeline/brep_surface_flips.hpp).
+  bool ring_triangulation(Index a, Index b, const Index* p, std::size_t k, double need, std::vector<Tet>* fresh) const;
+  static constexpr std::size_t kMaxRing = 7;
 
  private:
   std::vector<Index> free_;
@@ -177,7 +191,6 @@ class TetComplex {
   std::uint64_t clock_ = 0;
   void stamp_moved(const std::vector<Index>& tets);  // moved()'s clock, born_ and log
   // A failure: the clock then and the ring; kForever for an edge on a constrained face.
-  static constexpr std::size_t kMaxRing = 7;
   static constexpr std::uint64_t kForever = ~std::uint64_t{0};
   struct Failure {
     std::uint64_t stamp;
@@ -224,9 +237,6 @@ class TetComplex {
   bool holders(const Vec3& p, Index t0, std::vector<Index>* hold) const;
   bool try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue);
   bool try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue);
-  // The ring polygon p[0..k) around edge (a, b) triangulated at its best by dynamic programming,
-  // every tetrahedron's key above `need`: the tetrahedra into `fresh`; false when none is.
-  bool ring_triangulation(Index a, Index b, const Index* p, std::size_t k, double need, std::vector<Tet>* fresh) const;
   bool try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue);
 };
 

@@ -23,6 +23,7 @@
 #include <gp_Ax2.hxx>
 
 #include <stdexcept>
+#include <string>
 
 namespace bisect::test {
 
@@ -52,19 +53,33 @@ TopoDS_Shape make_box_minus_cylinder() {
   return cut.Shape();
 }
 
-TopoDS_Shape make_two_box_compsolid() {
+namespace {
+
+// The general fuse of the shapes (touching or overlapping faces become shared ones), its solids as
+// one CompSolid.
+TopoDS_Shape compsolid_of(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* what) {
   TopTools_ListOfShape args;
-  args.Append(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 1, 1, 1).Shape());
-  args.Append(BRepPrimAPI_MakeBox(gp_Pnt(1, 0, 0), 1, 1, 1).Shape());
-  BRepAlgoAPI_BuilderAlgo fuse;  // general fuse: the touching faces become one shared face
+  args.Append(a);
+  args.Append(b);
+  BRepAlgoAPI_BuilderAlgo fuse;
   fuse.SetArguments(args);
   fuse.Build();
-  if (!fuse.IsDone()) throw std::runtime_error("general fuse of two boxes failed");
+  if (!fuse.IsDone()) throw std::runtime_error(std::string("general fuse of ") + what + " failed");
   TopoDS_CompSolid cs;
-  BRep_Builder b;
-  b.MakeCompSolid(cs);
-  for (TopExp_Explorer ex(fuse.Shape(), TopAbs_SOLID); ex.More(); ex.Next()) b.Add(cs, ex.Current());
+  BRep_Builder builder;
+  builder.MakeCompSolid(cs);
+  for (TopExp_Explorer ex(fuse.Shape(), TopAbs_SOLID); ex.More(); ex.Next()) builder.Add(cs, ex.Current());
   return cs;
+}
+
+}  // namespace
+
+TopoDS_Shape make_two_box_compsolid() {
+  return compsolid_of(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 1, 1, 1).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(1, 0, 0), 1, 1, 1).Shape(), "two boxes");
+}
+
+TopoDS_Shape make_sphere_in_box() {
+  return compsolid_of(BRepPrimAPI_MakeBox(4, 4, 4).Shape(), BRepPrimAPI_MakeSphere(gp_Pnt(2, 2, 2), 1.2).Shape(), "a box and a ball");
 }
 
 TopoDS_Shape make_box_with_cavity() {

@@ -23,6 +23,9 @@ TopoDS_Shape make_two_box_compsolid();
 // the box [0,4]^3 with a spherical cavity of radius 1 at its centre: one solid, two shells;
 // volume 64 - 4 pi / 3
 TopoDS_Shape make_box_with_cavity();
+// the box [0,4]^3 and a ball of radius 1.2 at its centre as a CompSolid of two solids sharing the
+// sphere (general fuse), as ../shared's sphere-in-box; volumes 64 - 2.304 pi and 2.304 pi
+TopoDS_Shape make_sphere_in_box();
 // a compound of three solids that share no face: the box [0,2]^3, a cylinder of radius 0.8 and
 // height 2 standing on its top face at (1, 1, 2) (touching it, not fused), and the box
 // [4,5] x [0,1] x [0,1] apart; volumes 8, 1.28 pi, 1

@@ -130,29 +130,34 @@ TEST_P(BrepRoute, MeshesOnTheTrueSurfaces) {
       // its 11 under 5 degrees lie within 1.3 mm (a spacing) of faces with corners where two edges
       // meet at 0.2 degrees (Face19, Face20) or 0 (Face24, Face25: an arc leaving a line
       // tangentially); some of the 32 under 10 lie far from any such corner, and are the mesher's
-      EXPECT_GE(q.dihedral_min.min, 2.0) << model;
-      EXPECT_LE(under_10, 40) << model;
+      // (since the surface's edge flips and trades: 3.19 degrees and 21 under 10; 2.17 and 18
+      // before them)
+      EXPECT_GE(q.dihedral_min.min, 2.5) << model;
+      EXPECT_LE(under_10, 30) << model;
     } else if (model == "models/cad/Angled.step") {
-      // (8 since the face moves; 14 before them; of the 12 before the face corner limit, not
+      // (1 at 9.75 degrees since the surface's edge flips and trades, 2 at 6.89 before them; 8
+      // since the face moves; 14 before them; of the 12 before the face corner limit, not
       // located again since) all 12 within
       // 3.4 mm (two spacings) of where the small cylinder Face4 cuts the large
       // cylinder Face39 (along the B-spline Edge12 and its twin), caps and slivers of boundary
       // nodes, which neither moves nor an inserted node lift: the mesher's, not the CAD's (the two
       // faces meet there at 81 to 99 degrees)
-      EXPECT_GE(q.dihedral_min.min, 4.0) << model;
-      EXPECT_LE(under_10, 10) << model;
+      EXPECT_GE(q.dihedral_min.min, 6.0) << model;
+      EXPECT_LE(under_10, 5) << model;
     } else {
       EXPECT_GE(q.dihedral_min.min, 10.0) << model;
     }
-    // issue 16's surface angle, 20 degrees, but where the B-rep has sharper corners of its own
-    // (part.step, Angled.step). sphere-in-box: 9.7 before the face moves let the nodes on its
-    // sphere move, 17.7 with them (its sphere's proxy facets are cut along their edges, and a
-    // piece between such an edge and a cut line beside it is a few degrees wide at a corner),
-    // 25.3 since the surface angles' pass. Flange's 12.6 (two cut lines from one point of its top
-    // face) has been 22.8 since no cut leaves a corner under 25 degrees in a flat face.
-    if (model != "models/cad/part.step" && model != "models/cad/Angled.step") {
-      EXPECT_GE(st.surface_min_angle, 20.0) << model;
-    }
+  }
+  // issue 16's surface angle, 20 degrees, at every count, but where the B-rep has sharper corners
+  // of its own (part.step, Angled.step). sphere-in-box at 10^5: 9.7 before the face moves let the
+  // nodes on its sphere move, 17.7 with them (its sphere's proxy facets are cut along their
+  // edges, and a piece between such an edge and a cut line beside it is a few degrees wide at a
+  // corner), 25.3 since the surface angles' pass; at its floor (R = 10^3) 17.3 until the surface's
+  // edge flips (pipeline/brep_surface_flips.hpp). Flange's 12.6 at 10^5 (two cut lines from one
+  // point of its top face) has been 22.8 since no cut leaves a corner under 25 degrees in a flat
+  // face.
+  if (model != "models/cad/part.step" && model != "models/cad/Angled.step") {
+    EXPECT_GE(st.surface_min_angle, 20.0) << model;
   }
 }
 

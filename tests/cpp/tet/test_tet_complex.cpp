@@ -398,6 +398,28 @@ TEST(TetComplex, ReplaceLogsWhatItTookOutAndWhatItMade) {
   EXPECT_EQ(log.size(), 5u);
 }
 
+// With new_boundary, a tetrahedron with two faces on the boundary taken out for nothing: the
+// faces it shared become the boundary of the tetrahedra beyond them (the surface's edge flips
+// take such a cap out of a B-rep face). hold() marks a face constrained from both sides.
+TEST(TetComplex, ReplaceTakesOutABoundaryCapAndHoldMarksBothSides) {
+  const std::vector<Vec3> X = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.3, 0.3, 1), Vec3(0.3, 0.3, -1)};
+  const Index a = 0, b = 1, c = 2, d = 3, e = 4;
+  TetComplex cx(X);
+  cx.build({{a, b, c, d}, {a, c, b, e}});
+  for (const Tet& t : cx.tets()) ASSERT_TRUE(positive(X, t));
+  const Index cap = cx.tet[0][3] == d ? 0 : 1, rest = 1 - cap;
+  const int shared = cx.face_towards(rest, cap);
+  ASSERT_GE(shared, 0);
+  EXPECT_FALSE(cx.is_constrained(rest, shared));
+  cx.hold(rest, shared);
+  EXPECT_TRUE(cx.is_constrained(rest, shared));
+  EXPECT_TRUE(cx.is_constrained(cap, cx.face_towards(cap, rest)));
+  EXPECT_TRUE(cx.replace({cap}, {}, true).empty());
+  EXPECT_EQ(cx.live_count(), 1u);
+  EXPECT_EQ(cx.nb[rest][shared], -1);
+  for (int f = 0; f < 4; ++f) EXPECT_EQ(cx.nb[rest][f], -1);
+}
+
 TEST(TetComplex, LocateFindsAPointRoundADent) {
   std::vector<Vec3> X;
   std::vector<Tet> tets;

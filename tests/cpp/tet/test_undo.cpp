@@ -64,5 +64,30 @@ TEST(Undo, TakesBackFlipsAndInsertionsToTheSameMesh) {
   EXPECT_GT(cx.improve_all(std::numeric_limits<std::int64_t>::max()), 0);
 }
 
+// A local change undone from its own log (undo's `among`: the ids the change made, as `touched`
+// logs them): the same mesh, without a search of the whole complex. The surface angles' pass
+// (optimize/surface_angles.hpp) undoes a node's move with its flips this way.
+TEST(Undo, TakesBackALocalChangeFromItsOwnLog) {
+  optimize::GridCube g(7, 0.02);
+  TetComplex cx(g.X);
+  cx.build(g.tets);
+  const auto before = canonical(cx);
+  std::vector<TetComplex::Replacement> journal;
+  std::vector<Index> touched;
+  cx.journal = &journal, cx.touched = &touched;
+  std::vector<Index> some;
+  for (Index t = 0; t < 40; ++t) some.push_back(t);
+  const std::int64_t flips = cx.improve_around(some);
+  cx.journal = nullptr, cx.touched = nullptr;
+  ASSERT_GT(flips, 0);
+  EXPECT_NE(canonical(cx), before);
+  cx.undo(journal, &touched);
+  EXPECT_EQ(canonical(cx), before);
+  TetMesh m;
+  m.nodes = g.X;
+  for (const Tet& t : cx.tets()) m.add_tet(t.data());
+  EXPECT_TRUE(validate(m).empty());
+}
+
 }  // namespace
 }  // namespace bisect::tet
