@@ -58,9 +58,9 @@ inline double surface_trade_floor_deg(double triangle) { return std::clamp(trian
 // B-rep route, whose surfaces aim at 20 degrees; a polyhedral input's facets often cannot, and
 // lug.stl lost 13.1 to 10.2 degrees of its smallest dihedral angle to trades): for a triangle
 // under kSurfaceAimDeg where no such candidate reaches the aim, the best under the trade's floor
-// (surface_trade_floor_deg) instead, when it gains kSurfaceTradeGainDeg more; and where a bar
-// stops every candidate, the best of them with the transformations of 7.5 round the node after
-// it, undone unless every tetrahedron left there meets the trade's bars. One thread, nodes in id
+// (surface_trade_floor_deg) instead, when it gains kSurfaceTradeGainDeg more; and where neither
+// is taken, the best candidate of all with the transformations of 7.5 round the node after it,
+// undone unless every tetrahedron left there meets the trade's bars. One thread, nodes in id
 // order: the same mesh for the same input. Returns the moves made.
 std::int64_t improve_surface_angles(tet::TetComplex& cx, std::vector<Vec3>& X, const std::vector<char>& fixed, const FaceSlides& slides,
                                     int rounds, bool trades = false);

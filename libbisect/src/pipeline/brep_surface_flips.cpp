@@ -160,9 +160,7 @@ bool Flipper::flip(const Slot& s1, const Slot& s2, Index a, Index b) {
     if (axis >= 0 && ((b == p && pole_p) || (b == q && pole_q))) ub = toward(ub, ua);
     return sag(surf, X_[a], X_[b], ua, ub);
   };
-  const double off = pole_p || pole_q ? std::max({edge_sag(p, up, r, ur), edge_sag(p, up, s, us), edge_sag(q, uq, r, ur), edge_sag(q, uq, s, us)})
-                                      : std::max({edge_sag(p, up, q, uq), edge_sag(q, uq, r, ur), edge_sag(r, ur, p, up), edge_sag(p, up, s, us),
-                                                  edge_sag(s, us, q, uq)});
+  const double off = std::max({edge_sag(p, up, q, uq), edge_sag(q, uq, r, ur), edge_sag(r, ur, p, up), edge_sag(p, up, s, us), edge_sag(s, us, q, uq)});
   if (sag(surf, X_[r], X_[s], ur, us) > off + 1e-9 * (X_[r] - X_[s]).norm()) return false;
   // on each side, the tetrahedra round the edge from the face (p, q, r) to (p, q, s) give way to
   // the polygon r, ..., s they share with it triangulated and joined to p and to q (two
