@@ -3,8 +3,9 @@
 // placed well but joined badly: sphere-in-box at its floor kept a flat triangle (142.7 degrees at
 // a seam node between two near neighbours) whatever its nodes did. Such a triangle and its
 // neighbour across an edge inside one B-rep face take the quadrilateral's other diagonal, with
-// the tetrahedra behind them: the 2-2 transformation of thesis 7.5 on each side (once on the
-// outer boundary, on both sides of an interface: 4 tetrahedra for 4).
+// the tetrahedra behind them on each side (once on the outer boundary, on both sides of an
+// interface): the ring of tetrahedra round the edge gives way to its polygon triangulated and
+// joined to the edge's ends (the 2-2 transformation of thesis 7.5 where the ring has two).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -18,11 +19,15 @@ namespace bisect::pipeline {
 // Up to `rounds` rounds over the face pieces' triangles under optimize::kSurfaceWorkBelowDeg.
 // An edge of such a triangle is flipped when
 // - both its triangles lie in one B-rep face, the edge runs inside it (not along a B-rep edge or
-//   seam: the ends have the same (u, v) in both triangles, up to a chart's shift), and the
-//   quadrilateral is convex in (u, v);
-// - on each side the edge has exactly two tetrahedra, with a common fourth node, and the two new
-//   ones are positive with a smallest dihedral angle of at least their old ones' smallest or
-//   optimize::kSurfaceDihedralBarDeg, whichever is smaller;
+//   seam: the ends have the same (u, v) in both triangles, up to a chart's shift; a pole, one
+//   end at most, has its own (u, v) in each), and the quadrilateral is convex in (u, v) (at a
+//   pole, in the plane across the two triangles' normals);
+// - on each side the ring of tetrahedra from one triangle to the other round the edge (at most
+//   TetComplex::kMaxRing - 1 of them, no constrained face between) has a triangulation of its
+//   polygon whose tetrahedra are positive with a smallest dihedral angle of at least the ring's
+//   smallest or the floor, whichever is smaller (optimize::surface_trade_floor_deg for triangles
+//   under optimize::kSurfaceAimDeg, else optimize::kSurfaceDihedralBarDeg); a ring of one
+//   tetrahedron holding both triangles (a cap) goes, on one side at most;
 // - the new diagonal lies no further off the surface (at its middle) than the quadrilateral's
 //   five edges did: the chordal error of the grid stays;
 // - the smaller of the two triangles' smallest angles rises by 0.01 degrees or more.
