@@ -69,6 +69,58 @@ class ShapeMesherTest(unittest.TestCase):
         for n in shared:
             self.assertAlmostEqual(mesh.getNodeById(n).x, 10.0, places=9)
 
+    def test_femmesh_read_from_a_file_is_the_mesh_the_calls_build(self):
+        # on the main thread the nodes and elements reach FreeCAD through a binary .vtu that
+        # FemMesh.read loads (femmesh_file); it must be, item for item and group for group, the
+        # FemMesh that one addNode/addVolume/addFace call per item builds (the worker's route,
+        # and the fallback)
+        from bisectmesh import femmesh_file
+
+        b1 = Part.makeBox(10, 10, 10).cut(Part.makeCylinder(3, 10, FreeCAD.Vector(5, 5, 0)))
+        b2 = Part.makeBox(10, 10, 10, FreeCAD.Vector(10, 0, 0))
+        shape = BOPTools.SplitAPI.booleanFragments([b1, b2], "CompSolid")
+        faces, solids = len(shape.Faces), len(shape.Solids)
+        for order in (1, 2):
+            out = bisectmesh.core().mesh_brep(shape.exportBrepToString(), name="boxes", elements=3000, order=order)
+            read = shape_mesher._femmesh_from_arrays(out, faces, solids, lambda fraction: None, read=True)
+            calls = shape_mesher._femmesh_from_arrays(out, faces, solids, lambda fraction: None, read=False)
+            counts = (read.NodeCount, read.VolumeCount, read.FaceCount)
+            self.assertEqual(counts, (calls.NodeCount, calls.VolumeCount, calls.FaceCount))
+            self.assertEqual(counts, (len(out["nodes"]), len(out["tets"]), len(out["tris"])))
+            for n in range(1, read.NodeCount + 1):
+                self.assertEqual(read.getNodeById(n), calls.getNodeById(n), n)
+            for e in range(1, read.VolumeCount + read.FaceCount + 1):
+                self.assertEqual(read.getElementNodes(e), calls.getElementNodes(e), e)
+            names = lambda mesh: {mesh.getGroupName(g): sorted(mesh.getGroupElements(g)) for g in mesh.Groups}
+            groups = names(read)
+            self.assertEqual(len(groups), 2 * faces + solids)
+            self.assertEqual(groups, names(calls))
+            self.assertTrue(bisectmesh.quality(read)["valid"])
+            # what FreeCAD loads is checked against what was written: a file whose first
+            # tetrahedron's corners FreeCAD would have reordered is told apart
+            tets = np.asarray(out["tets"])[:, list(shape_mesher.TET10_PERMUTATION if order == 2 else
+                                                   shape_mesher.TET4_PERMUTATION)]
+            blocks = [(tets, 3), (np.asarray(out["tris"]), 2)]
+            self.assertTrue(femmesh_file.as_written(read, len(out["nodes"]), blocks))
+            self.assertIsNotNone(femmesh_file.read_femmesh(np.asarray(out["nodes"]), blocks))  # FreeCAD 0.20 reads it
+            swapped = tets.copy()
+            swapped[0, [1, 2]] = swapped[0, [2, 1]]
+            self.assertFalse(femmesh_file.as_written(read, len(out["nodes"]), [(swapped, 3), blocks[1]]))
+        # a temporary folder that cannot be written: no file, None, and mesh_shape builds by calls
+        real = femmesh_file.tempfile.mkstemp
+
+        def refuse(*args, **kwargs):
+            raise OSError(28, "No space left on device")
+
+        femmesh_file.tempfile.mkstemp = refuse
+        try:
+            self.assertIsNone(femmesh_file.read_femmesh(np.asarray(out["nodes"]), blocks))
+            mesh = shape_mesher.mesh_shape(shape, elements=3000, order=2)
+        finally:
+            femmesh_file.tempfile.mkstemp = real
+        self.assertEqual(names(mesh), groups)
+        self.assertEqual(mesh.NodeCount, len(out["nodes"]))
+
     def test_overlapping_solids_are_refused_naming_both(self):
         # a compound of a box and a cylinder through it (neither fused nor fragmented): meshed
         # apart, the two meshes would fill the cylinder's part of the box twice

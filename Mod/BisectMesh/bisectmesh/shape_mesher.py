@@ -21,6 +21,7 @@ import numpy as np
 
 from . import arguments, core
 from .femmesh_arrays import TET4_PERMUTATION, TET10_PERMUTATION
+from .femmesh_file import read_femmesh
 
 # FreeCAD's defaults for a Part view object (Part preferences "MeshDeviation" and
 # "MeshAngularDeflection"): the deviation in percent, the angular deflection in degrees
@@ -215,9 +216,15 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     groups ``Face<k>_Nodes``, ``Face<k>_Faces`` (k = 1..faces) and ``Solid<r>`` (r = 1..solids).
     ``progress(fraction)`` is called now and then.
 
-    Off the main thread (the mesh panel's worker) the build lets the window's thread in after each
-    slice. Measured in a FreeCAD window at 2e5 tetra10 (tests/freecad/gui_stall.py) the window froze
-    0.2-0.57 s while this ran: the worker gave the GIL up between calls and took it back before
+    On the main thread the nodes and elements go in by FreeCAD's reading of a binary ``.vtu``
+    (``femmesh_file``: lug at 10^5, 0.19 s against 0.33 s at order 1, 0.34 s against 0.72 s at
+    order 2), one C++ call that holds the GIL throughout; nothing waits on the main thread but the
+    caller. Off it (the mesh panel's worker), and wherever that reading fails, they are added one
+    call each, in slices.
+
+    Off the main thread the build lets the window's thread in after each slice. Measured in a
+    FreeCAD window at 2e5 tetra10 (tests/freecad/gui_stall.py) the window froze 0.2-0.57 s while
+    this ran: the worker gave the GIL up between calls and took it back before
     the window's thread, waiting on a busy machine, was scheduled (Python's switch interval only
     helps a waiter that finds the GIL held all along). A 1 ms sleep per slice (5,000 items, 20-50
     ms of FreeCAD's adding) ends that: the longest freeze became 0.04-0.06 s. At 2e5 tetra10 it
@@ -226,7 +233,8 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     lists live long enough to be promoted, and the full collections that followed (20-35 ms each,
     one every 0.1 s, GIL held) walked all of FreeCAD's objects to find nothing (rows hold no
     cycles)."""
-    pause = 0.001 if threading.current_thread() is not threading.main_thread() else 0.0
+    worker = threading.current_thread() is not threading.main_thread()
+    pause = 0.001 if worker else 0.0
 
     def tick(fraction):
         if pause:
@@ -237,54 +245,78 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     was_enabled = gc.isenabled()
     gc.disable()
     try:
-        return _femmesh_from_arrays(out, faces, solids, tick)
+        return _femmesh_from_arrays(out, faces, solids, tick, read=not worker)
     finally:
         if was_enabled:
             gc.enable()
 
 
-def _femmesh_from_arrays(out, faces, solids, tick):
-    import Fem
+def _item_weights(quadratic):
+    """The bar's weights of a node, a tetrahedron and a triangle: what FreeCAD's adding of each
+    costs against a node's (measured in freecadcmd, 10^5 nodes and 4 * 10^4 elements: a node 1.6
+    us, a tetra10 4.0, a tetra4 2.1, a 6-node triangle 3.1). Counted alike, the nodes ran the bar
+    ahead of the time (at 2e5 tetra10 57% of the build's bar in 32% of its time; gui_stall.py's
+    limit is 0.2)."""
+    return (1.0, 2.5 if quadratic else 1.35, 2.0 if quadratic else 1.3)
 
+
+def _femmesh_from_arrays(out, faces, solids, tick, read):
     nodes, tets, tris = np.asarray(out["nodes"], float), np.asarray(out["tets"]), np.asarray(out["tris"])
     region, tri_tag = np.asarray(out["region"]), np.asarray(out["tri_tag"])
-    # the bar's steps weigh each item by what FreeCAD's adding of it costs against a node's
-    # (measured in freecadcmd, 10^5 nodes and 4 * 10^4 elements: a node 1.6 us, a tetra10 4.0, a
-    # tetra4 2.1, a 6-node triangle 3.1): counted alike, the nodes ran the bar ahead of the time
-    # (at 2e5 tetra10 57% of this build's bar in 32% of its time; gui_stall.py's limit is 0.2)
     quadratic = tets.shape[1] == 10
-    weights = (1.0, 2.5 if quadratic else 1.35, 2.0 if quadratic else 1.3)
+    weights = _item_weights(quadratic)
     total = max(1.0, len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2] + faces + solids)
     # a progress call every 5,000 items: about 50 ms of FreeCAD's adding of tetra10 (Stop within
     # 0.5 s). The arrays become Python lists a slice at a time: one tolist() of 10^6 tetra10 holds
     # the GIL for a second and more, and the window with it.
     step = 5000
-    mesh = Fem.FemMesh()
-    add_node, add_volume, add_face = mesh.addNode, mesh.addVolume, mesh.addFace
-    perm = list(TET10_PERMUTATION if tets.shape[1] == 10 else TET4_PERMUTATION)
-    first = len(tets) + 1
-    done = 0.0
-    for array, add, first_id, weight in ((nodes, lambda p, i: add_node(p[0], p[1], p[2], i), 1, weights[0]),
-                                         (tets[:, perm] + 1, add_volume, 1, weights[1]),
-                                         (tris + 1, add_face, first, weights[2])):
-        for start, rows in _slices(array, step):
-            for i, row in enumerate(rows, first_id + start):
-                add(row, i)
-            done += len(rows) * weight
-            tick(done / total)
+    perm = list(TET10_PERMUTATION if quadratic else TET4_PERMUTATION)
+    first = len(tets) + 1  # the triangles' ids follow the tetrahedra's
+    done = len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2]
+    mesh = read_femmesh(nodes, [(tets[:, perm], 3), (tris, 2)]) if read else None
+    if mesh is not None:
+        tick(done / total)
+    else:
+        mesh = _femmesh_by_calls(nodes, tets[:, perm], tris, step, lambda fraction: tick(fraction * done / total))
+    # FreeCAD 0.20's addGroupElements walks every element of the group's kind at each call (lug at
+    # 10^6: 221 calls of 5,000 ids took 3.5 s, 16 ms each; all 15 groups in one call each 1.5 s,
+    # about 1 us an id besides the walks), so the main thread gives each group's ids in one call
+    # and the worker slices of 50,000 (lug at 10^6 on a worker: the build 4.9 s against 7.0 s, a
+    # thread waiting for the GIL 0.125 s at the longest)
+    group_step = 50000 if not read else max(1, len(nodes), len(tets), len(tris))
     for k in range(faces):
         mine = np.nonzero(tri_tag == k)[0]
         for kind, ids in (("Nodes", np.unique(tris[mine]) + 1), ("Faces", mine + first)):
             g = mesh.addGroup("Face%d_%s" % (k + 1, kind), kind[:-1])
-            for _, part in _slices(ids, step):  # FreeCAD's adding to a group: 1.2 s for 10^6 tetra10's faces
+            for _, part in _slices(ids, group_step):
                 mesh.addGroupElements(g, part)
                 tick((done + k) / total)
     for r in range(solids):
         g = mesh.addGroup("Solid%d" % (r + 1), "Volume")
         ids = np.nonzero(region == r)[0] + 1
-        # in slices, each one call into FreeCAD: 2e5 ids in one call took 0.5 s without a progress call
-        for start, part in _slices(ids, step):
+        for start, part in _slices(ids, group_step):
             mesh.addGroupElements(g, part)
             tick((done + faces + r + start / len(ids)) / total)
     tick(1.0)
+    return mesh
+
+
+def _femmesh_by_calls(nodes, tets, tris, step, tick):
+    """A ``Fem.FemMesh`` of nodes (ids 1..N), tetrahedra in FreeCAD's node order (1..T) and
+    triangles (T+1..), one FreeCAD call per item, ``tick(fraction)`` after each slice of ``step``."""
+    import Fem
+
+    weights = _item_weights(tets.shape[1] == 10)
+    total = max(1.0, len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2])
+    mesh = Fem.FemMesh()
+    add_node, add_volume, add_face = mesh.addNode, mesh.addVolume, mesh.addFace
+    done = 0.0
+    for array, add, first_id, weight in ((nodes, lambda p, i: add_node(p[0], p[1], p[2], i), 1, weights[0]),
+                                         (tets + 1, add_volume, 1, weights[1]),
+                                         (tris + 1, add_face, len(tets) + 1, weights[2])):
+        for start, rows in _slices(array, step):
+            for i, row in enumerate(rows, first_id + start):
+                add(row, i)
+            done += len(rows) * weight
+            tick(done / total)
     return mesh

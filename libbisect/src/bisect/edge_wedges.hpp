@@ -8,15 +8,9 @@
 #include <vector>
 
 #include "bisect/polyhedral_model.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect {
-
-inline std::uint64_t edge_key(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-inline Index key_lo(std::uint64_t k) { return static_cast<Index>(k >> 32); }
-inline Index key_hi(std::uint64_t k) { return static_cast<Index>(k & 0xffffffffu); }
 
 struct FaceUse {
   Index face;

@@ -7,6 +7,7 @@
 
 #include "bisect/errors.hpp"
 #include "io/text_scan.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect::io {
 
@@ -87,11 +88,6 @@ void check_face_shape(const std::vector<Vec3>& nodes, const std::vector<Index>& 
 }
 
 namespace {
-
-std::uint64_t edge_key(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
 
 struct EdgeUse {
   std::int32_t count = 0;

@@ -32,10 +32,32 @@ double chord_end_param(const BrepInput& in, const BrepProxy& px, Index e, Index 
 
 }  // namespace
 
-BrepBoundary::BrepBoundary(const BrepInput& input, const BrepProxy& proxy, const PolyhedralModel& m) : in(input), px(proxy), model(m) {
-  pole_.assign(in.vertices.size(), 0);
+std::vector<char> pole_vertices(const BrepInput& in) {
+  std::vector<char> pole(in.vertices.size(), 0);
   for (const BrepEdge& e : in.edges)
-    if (e.degenerate && e.v0 >= 0) pole_[e.v0] = 1;
+    if (e.degenerate && e.v0 >= 0) pole[e.v0] = 1;
+  return pole;
+}
+
+std::vector<Index> common_brep_edges(const BrepInput& in, const PointOn& a, const PointOn& b) {
+  const auto lies_on = [&in](const PointOn& on, std::size_t e) {
+    if (on.kind == PointOn::kEdge) return on.id == static_cast<Index>(e);
+    return on.kind == PointOn::kVertex && (in.edges[e].v0 == on.id || in.edges[e].v1 == on.id);
+  };
+  std::vector<Index> out;
+  if (a.kind == PointOn::kEdge || b.kind == PointOn::kEdge) {  // at most that edge
+    const Index e = a.kind == PointOn::kEdge ? a.id : b.id;
+    if (lies_on(a, e) && lies_on(b, e)) out.push_back(e);
+    return out;
+  }
+  if (a.kind != PointOn::kVertex || b.kind != PointOn::kVertex) return out;
+  for (std::size_t e = 0; e < in.edges.size(); ++e)
+    if (lies_on(a, e) && lies_on(b, e)) out.push_back(static_cast<Index>(e));
+  return out;
+}
+
+BrepBoundary::BrepBoundary(const BrepInput& input, const BrepProxy& proxy, const PolyhedralModel& m)
+    : in(input), px(proxy), model(m), pole_(pole_vertices(input)) {
   node_on_.resize(model.nodes.size());
   for (std::size_t v = 0; v < model.nodes.size(); ++v) node_on_[v] = classify(static_cast<Index>(v));
   // the chords a curve leaves by more than round-off, judged at their quarter points

@@ -32,6 +32,15 @@ struct PointOn {
   double t = 0;      // kEdge: the edge parameter
 };
 
+// Per B-rep vertex, 1 at a pole: the vertex of a degenerate edge (one point in 3D, a segment in
+// (u, v)).
+std::vector<char> pole_vertices(const BrepInput& in);
+
+// The B-rep edges that a point lying on `a` and one lying on `b` both lie on, in the order of
+// their indices: a point on an edge lies on it, a vertex on every edge it bounds, a point inside
+// a face or a solid on none (so: the edges a mesh edge between them may run along).
+std::vector<Index> common_brep_edges(const BrepInput& in, const PointOn& a, const PointOn& b);
+
 // The mesh's boundary nodes as they come from the model's edges: the proxy position (where the
 // decomposition put it), the true position (its image, or for interior nodes the proxy position
 // until the morph moves it), and what it lies on.

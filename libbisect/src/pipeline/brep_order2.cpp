@@ -25,14 +25,7 @@ double param_on_edge(const BrepInput& in, const PointOn& on, Index e, double nea
 
 // The B-rep edge both ends lie on, with their parameters; -1 when none.
 Index common_edge(const BrepInput& in, const PointOn& a, const PointOn& b, double* ta, double* tb) {
-  std::vector<Index> candidates;
-  if (a.kind == PointOn::kEdge) candidates.push_back(a.id);
-  if (b.kind == PointOn::kEdge) candidates.push_back(b.id);
-  if (a.kind == PointOn::kVertex && b.kind == PointOn::kVertex)
-    for (std::size_t e = 0; e < in.edges.size(); ++e)
-      if (!in.edges[e].degenerate && ((in.edges[e].v0 == a.id && in.edges[e].v1 == b.id) || (in.edges[e].v1 == a.id && in.edges[e].v0 == b.id)))
-        candidates.push_back(static_cast<Index>(e));
-  for (Index e : candidates) {
+  for (Index e : common_brep_edges(in, a, b)) {
     if (in.edges[e].degenerate || !in.edges[e].curve) continue;
     const double mid = 0.5 * (in.edges[e].curve->t_min() + in.edges[e].curve->t_max());
     const double x = param_on_edge(in, a, e, b.kind == PointOn::kEdge && b.id == e ? b.t : mid);

@@ -10,45 +10,17 @@
 #include "bisect/quality.hpp"
 #include "optimize/sliver_repair.hpp"
 #include "optimize/surface_angles.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect::pipeline {
 namespace {
 
 using EdgeKey = std::uint64_t;
-EdgeKey edge_key(Index a, Index b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
-}
 
 // A face piece's triangle: pieces[piece].tris[k].
 struct Slot {
   std::size_t piece, k;
 };
-
-// The B-rep edges a node lies on: its own, or those at its vertex.
-std::vector<Index> brep_edges_at(const BrepInput& in, const PointOn& on) {
-  if (on.kind == PointOn::kEdge) return {on.id};
-  std::vector<Index> out;
-  if (on.kind == PointOn::kVertex)
-    for (std::size_t e = 0; e < in.edges.size(); ++e)
-      if (in.edges[e].v0 == on.id || in.edges[e].v1 == on.id) out.push_back(static_cast<Index>(e));
-  return out;
-}
-
-// True when both nodes lie on one B-rep edge (their mesh edge may run along it: never flipped).
-bool on_one_brep_edge(const BrepInput& in, const PointOn& a, const PointOn& b) {
-  const std::vector<Index> ea = brep_edges_at(in, a), eb = brep_edges_at(in, b);
-  for (Index e : ea)
-    if (std::find(eb.begin(), eb.end(), e) != eb.end()) return true;
-  return false;
-}
-
-// True at a pole: a vertex of a degenerate edge (one point in 3D, a segment in (u, v)).
-bool at_pole(const BrepInput& in, const PointOn& on) {
-  if (on.kind != PointOn::kVertex) return false;
-  for (const BrepEdge& e : in.edges)
-    if (e.degenerate && e.v0 == on.id) return true;
-  return false;
-}
 
 double cross2(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 u = b - a, v = c - a;
@@ -62,7 +34,7 @@ double sag(const ParametricSurface& surf, const Vec3& a, const Vec3& b, const Ve
 
 class Flipper {
  public:
-  Flipper(const BrepInput& in, BrepGrids& g, tet::TetComplex& cx, const std::vector<Vec3>& X) : in_(in), g_(g), cx_(cx), X_(X), at_(X.size(), -1) {
+  Flipper(const BrepInput& in, BrepGrids& g, tet::TetComplex& cx, const std::vector<Vec3>& X) : in_(in), g_(g), cx_(cx), X_(X), at_(X.size(), -1), pole_(pole_vertices(in)) {
     for (std::size_t t = 0; t < cx.tet.size(); ++t)
       if (cx.alive[t])
         for (Index v : cx.tet[t]) at_[v] = static_cast<Index>(t);
@@ -93,6 +65,9 @@ class Flipper {
   tet::TetComplex& cx_;
   const std::vector<Vec3>& X_;
   std::vector<Index> at_;  // a live tetrahedron at each node
+  std::vector<char> pole_;  // per B-rep vertex: a pole
+
+  bool at_pole(const PointOn& on) const { return on.kind == PointOn::kVertex && pole_[on.id]; }
 };
 
 bool Flipper::flip(const Slot& s1, const Slot& s2, Index a, Index b) {
@@ -115,11 +90,12 @@ bool Flipper::flip(const Slot& s1, const Slot& s2, Index a, Index b) {
   const Index s = t2[js];
   if (s == r) return false;
   const bool reversed = (jp + 1) % 3 == jq;  // piece 2 runs the other way round: (p, q, s)
-  if (on_one_brep_edge(in_, g_.nodes.on[p], g_.nodes.on[q])) return false;
+  // a mesh edge that may run along a B-rep edge is never flipped
+  if (!common_brep_edges(in_, g_.nodes.on[p], g_.nodes.on[q]).empty()) return false;
   // a pole (one end at most, never a new diagonal's) has a (u, v) of its own in each triangle,
   // somewhere on its segment: the other end says what the charts' shift is
-  const bool pole_p = at_pole(in_, g_.nodes.on[p]), pole_q = at_pole(in_, g_.nodes.on[q]);
-  if ((pole_p && pole_q) || at_pole(in_, g_.nodes.on[r]) || at_pole(in_, g_.nodes.on[s])) return false;
+  const bool pole_p = at_pole(g_.nodes.on[p]), pole_q = at_pole(g_.nodes.on[q]);
+  if ((pole_p && pole_q) || at_pole(g_.nodes.on[r]) || at_pole(g_.nodes.on[s])) return false;
   // the same (u, v) at both ends in both triangles, up to a shift of the chart (a seam gives a
   // node two)
   const Vec2 shift = pole_p ? Vec2(uv2[jq] - uv1[(i + 1) % 3]) : Vec2(uv2[jp] - uv1[i]);

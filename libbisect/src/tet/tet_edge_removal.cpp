@@ -11,6 +11,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
 #include "geom/predicates.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect::tet {
 
@@ -51,7 +52,7 @@ int TetComplex::edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index
 }
 
 bool TetComplex::try_edge_removal(Index t, Index a, Index b, std::vector<std::pair<Index, int>>& queue) {
-  const std::uint64_t edge = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+  const std::uint64_t edge = edge_key(a, b);
   if (const Failure* seen = failed_.find(edge)) {
     const Failure& was = *seen;
     if (was.stamp == kForever) return false;

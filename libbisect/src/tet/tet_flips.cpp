@@ -11,6 +11,7 @@
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
 #include "geom/predicates.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect::tet {
 
@@ -57,7 +58,7 @@ bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& 
     surface_tag.erase(tag_n);
     surface_tag[face_key(x, d, e)] = tag;
     surface_tag[face_key(y, d, e)] = tag;
-    failed_.erase((static_cast<std::uint64_t>(std::min(x, y)) << 32) | static_cast<std::uint32_t>(std::max(x, y)));
+    failed_.erase(edge_key(x, y));
     for (Index id : replace({t, n}, {tx, ty}, true))
       for (int g = 0; g < 4; ++g) queue.push_back({id, g});
     return true;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect {
 
@@ -110,7 +111,7 @@ TetMesh to_second_order(const TetMesh& linear, const std::function<bool()>& canc
   std::unordered_map<std::uint64_t, Index> mid;  // edge (lo << 32 | hi) -> its mid-node
   mid.reserve(linear.num_tets() * 2);
   auto middle = [&](Index a, Index b) {
-    const std::uint64_t key = (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+    const std::uint64_t key = edge_key(a, b);
     auto [it, fresh] = mid.emplace(key, Index(out.nodes.size()));
     if (fresh) {
       if (out.nodes.size() >= std::size_t(std::numeric_limits<Index>::max())) throw MeshingError("to_second_order: more than 2^31-1 nodes");

@@ -16,6 +16,7 @@
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
 #include "util/progress_poll.hpp"
+#include "util/edge_key.hpp"
 
 namespace bisect {
 
@@ -65,12 +66,6 @@ struct EdgeRecord {
   Index mid, t;
 };
 
-std::uint64_t edge_key(Index a, Index b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-Index edge_lo(std::uint64_t key) { return Index(key >> 32); }
-Index edge_hi(std::uint64_t key) { return Index(key & 0xffffffffu); }
 
 // Orders coordinates with NaN after every number and all NaNs equivalent: a strict weak order
 // for any input, so std::sort stays well defined on a mesh with non-finite coordinates.
@@ -257,8 +252,8 @@ private:
       std::size_t j = i + 1;
       while (j < boundary_edges.size() && boundary_edges[j] == boundary_edges[i]) ++j;
       if ((j - i) % 2 == 1) {
-        std::int64_t n0 = m_.node_id(edge_lo(boundary_edges[i])), n1 = m_.node_id(edge_hi(boundary_edges[i]));
-        std::string where = node_at(edge_lo(boundary_edges[i])) + " - " + node_at(edge_hi(boundary_edges[i]));
+        std::int64_t n0 = m_.node_id(key_lo(boundary_edges[i])), n1 = m_.node_id(key_hi(boundary_edges[i]));
+        std::string where = node_at(key_lo(boundary_edges[i])) + " - " + node_at(key_hi(boundary_edges[i]));
         add(ViolationKind::OpenBoundary, {std::min(n0, n1), std::max(n0, n1)},
             "boundary edge " + where + " is used by " + num(std::int64_t(j - i)) +
                 " boundary faces (an odd number: the boundary surface is not closed)");
@@ -393,7 +388,7 @@ private:
         std::string names;
         for (auto id : ids) names += " " + num(id);
         add(ViolationKind::BadMidNode, ids,
-            "edge " + num(m_.node_id(edge_lo(edges[i].key))) + "-" + num(m_.node_id(edge_hi(edges[i].key))) +
+            "edge " + num(m_.node_id(key_lo(edges[i].key))) + "-" + num(m_.node_id(key_hi(edges[i].key))) +
                 " has different mid-edge nodes (" + mids.substr(1) + ") in tetrahedra" + names);
       }
       i = j;

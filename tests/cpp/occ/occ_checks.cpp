@@ -1,5 +1,6 @@
 #include "occ_checks.hpp"
 
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -10,8 +11,10 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 
+#include "bisect/occ.hpp"
 #include "occ_shape.hpp"
 
 namespace bisect::test {
@@ -38,6 +41,12 @@ double signed_area(const std::array<Vec2, 3>& q) {
 }  // namespace
 
 BrepInput input_of(const TopoDS_Shape& shape, const std::string& name) { return occ::brep_input_from_shape(shape, name); }
+
+BrepInput input_through_string(const TopoDS_Shape& shape, const std::string& name) {
+  std::ostringstream brep;
+  BRepTools::Write(shape, brep);
+  return load_brep_string(brep.str(), name);
+}
 
 double corner_volume(const TetMesh& m, std::size_t t) {
   const Vec3 &a = m.nodes[m.tet_node(t, 0)], &b = m.nodes[m.tet_node(t, 1)], &c = m.nodes[m.tet_node(t, 2)],

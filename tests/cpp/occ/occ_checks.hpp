@@ -14,6 +14,10 @@ namespace bisect::test {
 
 // The adapter's BrepInput of a shape built in a test.
 BrepInput input_of(const TopoDS_Shape& shape, const std::string& name = "test shape");
+// The same shape as FreeCAD hands it over: written as a BREP string (Part.Shape.exportBrepToString)
+// and read back by load_brep_string. Shapes from memory and from a string need not mesh alike
+// (test_brep_apex.cpp, test_brep_surface_flips.cpp): the tests of the meshing take this one.
+BrepInput input_through_string(const TopoDS_Shape& shape, const std::string& name = "test shape");
 
 // The volume of tetrahedron t of a mesh, from its corners (straight-sided), and of the whole mesh.
 double corner_volume(const TetMesh& m, std::size_t t);

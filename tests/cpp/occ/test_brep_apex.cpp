@@ -7,10 +7,8 @@
 // way.
 #include <gtest/gtest.h>
 
-#include <BRepTools.hxx>
 
 #include <cmath>
-#include <sstream>
 
 #include "bisect/generate.hpp"
 #include "bisect/occ.hpp"
@@ -26,9 +24,7 @@ TEST(BrepApex, TheConesGridDoesNotFoldAtItsApex) {
   // through a BREP string, as FreeCAD hands its shapes over (the shape fresh from
   // BRepPrimAPI_MakeCone, never written and read, meshes otherwise, much worse, for a cause not
   // found; the library takes shapes only from files and strings)
-  std::ostringstream brep;
-  BRepTools::Write(test::make_cone(), brep);
-  const BrepInput in = load_brep_string(brep.str(), "cone");
+  const BrepInput in = test::input_through_string(test::make_cone(), "cone");
   for (int R : {5000, 20000}) {
     GenerateOptions opt;
     opt.sizing.elements = R;

@@ -4,15 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRepTools.hxx>
 
 #include <chrono>
-#include <sstream>
 #include <string>
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
 #include "bisect/occ.hpp"
+#include "occ_checks.hpp"
 
 namespace bisect {
 namespace {
@@ -21,9 +20,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 BrepInput cylinder() {
-  std::ostringstream brep;
-  BRepTools::Write(BRepPrimAPI_MakeCylinder(5, 20).Shape(), brep);
-  return load_brep_string(brep.str(), "cylinder");
+  return test::input_through_string(BRepPrimAPI_MakeCylinder(5, 20).Shape(), "cylinder");
 }
 
 TEST(BrepBoundedWork, TheBoundCountsTheLayerUnderAFinelyBoundedCurvedFace) {

@@ -6,11 +6,9 @@
 #include <BOPAlgo_Builder.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRepTools.hxx>
 #include <gp_Ax2.hxx>
 
 #include <cmath>
-#include <sstream>
 #include <set>
 #include <vector>
 
@@ -26,9 +24,7 @@ namespace {
 TEST(BrepCompound, SeparateBodiesAreMeshedEachOnItsOwn) {
   // through a BREP string, as FreeCAD hands a shape over (shape.exportBrepToString()); the shape
   // as built in memory fills the cylinder differently (not understood; FreeCAD never passes one)
-  std::ostringstream brep;
-  BRepTools::Write(test::make_touching_compound(), brep);
-  const BrepInput in = load_brep_string(brep.str(), "touching compound");
+  const BrepInput in = test::input_through_string(test::make_touching_compound(), "touching compound");
   ASSERT_EQ(in.solids.size(), 3u);
   const double want_volume[3] = {8, 1.28 * M_PI, 1};
   for (int s = 0; s < 3; ++s) EXPECT_NEAR(in.solids[s].volume, want_volume[s], 1e-6 * want_volume[s]);
@@ -89,9 +85,7 @@ TEST(BrepCompound, CylinderThroughABoxAsFragmentsMeshesConformingly) {
   fuse.AddArgument(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5, 5, -5), gp_Dir(0, 0, 1)), 3, 20).Shape());
   fuse.Perform();
   ASSERT_FALSE(fuse.HasErrors());
-  std::ostringstream brep;
-  BRepTools::Write(fuse.Shape(), brep);
-  const BrepInput in = load_brep_string(brep.str(), "fragments");
+  const BrepInput in = test::input_through_string(fuse.Shape(), "fragments");
   ASSERT_EQ(in.solids.size(), 4u);
   GenerateOptions opt;
   opt.sizing.elements = 6000;

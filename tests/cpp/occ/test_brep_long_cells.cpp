@@ -6,10 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRepTools.hxx>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "bisect/generate.hpp"
@@ -22,9 +20,7 @@ namespace bisect {
 namespace {
 
 BrepInput cylinder(double r, double h, const char* name) {
-  std::ostringstream brep;
-  BRepTools::Write(BRepPrimAPI_MakeCylinder(r, h).Shape(), brep);
-  return load_brep_string(brep.str(), name);
+  return test::input_through_string(BRepPrimAPI_MakeCylinder(r, h).Shape(), name);
 }
 
 BrepInput rod() { return cylinder(5, 200, "rod"); }

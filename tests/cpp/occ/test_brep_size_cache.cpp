@@ -5,21 +5,19 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRepTools.hxx>
 
 #include <random>
-#include <sstream>
 
 #include "bisect/occ.hpp"
+#include "occ_checks.hpp"
 #include "size/brep_sizes.hpp"
 
 namespace bisect {
 namespace {
 
 TEST(BrepSizeCache, TheFieldIsTheSameWithTheSamplesKept) {
-  std::ostringstream brep;
-  BRepTools::Write(BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(5, 50).Shape(), BRepPrimAPI_MakeCylinder(4, 50).Shape()).Shape(), brep);
-  const BrepInput in = load_brep_string(brep.str(), "tube");
+  const BrepInput in =
+      test::input_through_string(BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(5, 50).Shape(), BRepPrimAPI_MakeCylinder(4, 50).Shape()).Shape(), "tube");
   const BrepTessellation tess = in.tessellate(0.05, 0.3);
   SizeOptions o;
   o.curvature_elements = 24;  // 1.05 on the bore (radius 4), 1.31 outside

@@ -10,14 +10,12 @@
 // sphere lies on it over its own edge.
 #include <gtest/gtest.h>
 
-#include <BRepTools.hxx>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "bisect/generate.hpp"
@@ -33,9 +31,7 @@ namespace {
 TEST(BrepSurfaceFlips, SphereInBoxAtItsCoarsestCountsReachesTwentyDegrees) {
   // through a BREP string, as FreeCAD hands a shape over (the shape as the fuse left it in memory
   // meshes differently: its grids are not the same)
-  std::ostringstream brep;
-  BRepTools::Write(test::make_sphere_in_box(), brep);
-  const BrepInput in = load_brep_string(brep.str(), "sphere in box");
+  const BrepInput in = test::input_through_string(test::make_sphere_in_box(), "sphere in box");
   const Vec3 centre(2, 2, 2);
   std::int64_t flips = 0;
   for (std::int64_t R : {1000, 2000, 3000}) {

@@ -7,12 +7,10 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRepTools.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <string>
 
 #include "bisect/errors.hpp"
@@ -26,17 +24,11 @@
 namespace bisect {
 namespace {
 
-BrepInput from_shape(const TopoDS_Shape& shape, const char* name) {
-  std::ostringstream brep;
-  BRepTools::Write(shape, brep);
-  return load_brep_string(brep.str(), name);
-}
-
-BrepInput plate() { return from_shape(BRepPrimAPI_MakeBox(50, 20, 1).Shape(), "plate"); }
+BrepInput plate() { return test::input_through_string(BRepPrimAPI_MakeBox(50, 20, 1).Shape(), "plate"); }
 
 // FreeCAD's constraint_transform_torque: a tube of radius 5, wall 1, length 50.
 BrepInput tube() {
-  return from_shape(BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(5, 50).Shape(), BRepPrimAPI_MakeCylinder(4, 50).Shape()).Shape(), "tube");
+  return test::input_through_string(BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(5, 50).Shape(), BRepPrimAPI_MakeCylinder(4, 50).Shape()).Shape(), "tube");
 }
 
 TEST(WallThickness, PlateAndTubeWalls) {
@@ -130,7 +122,7 @@ TEST(BrepThinWalls, ATubeWallGetsElementsAcrossIt) {
 // A cell that the star fills badly is filled again by Delaunay boundary recovery: a disc of
 // radius 10 and thickness 1 at spacing 1 kept a tenth of its tetrahedra under 10 degrees.
 TEST(BrepThinWalls, ABadlyStarredCellIsFilledAgain) {
-  const BrepInput in = from_shape(BRepPrimAPI_MakeCylinder(10, 1).Shape(), "disc");
+  const BrepInput in = test::input_through_string(BRepPrimAPI_MakeCylinder(10, 1).Shape(), "disc");
   GenerateOptions opt;
   opt.sizing.size = 1;
   GenerateStats st;
@@ -151,7 +143,7 @@ namespace {
 TEST(BrepThinWalls, AnElementBoundRefusesWhatTheWallsWouldMakeBeforeTheFill) {
   // 100 x 100 x 1 at R = 500: the walls' cap asks for elements 0.8 across, some 10^5 of them,
   // refused from the size field before any node is placed
-  const BrepInput in = from_shape(BRepPrimAPI_MakeBox(100, 100, 1).Shape(), "sheet");
+  const BrepInput in = test::input_through_string(BRepPrimAPI_MakeBox(100, 100, 1).Shape(), "sheet");
   GenerateOptions opt;
   opt.sizing.elements = 500;
   opt.max_elements = 20000;
