@@ -16,7 +16,11 @@ namespace bisect::test {
 BrepInput input_of(const TopoDS_Shape& shape, const std::string& name = "test shape");
 // The same shape as FreeCAD hands it over: written as a BREP string (Part.Shape.exportBrepToString)
 // and read back by load_brep_string. Shapes from memory and from a string need not mesh alike
-// (test_brep_apex.cpp, test_brep_surface_flips.cpp): the tests of the meshing take this one.
+// (test_brep_apex.cpp, test_brep_surface_flips.cpp): BREP text keeps 15 significant digits, so
+// reals come back rounded, e.g. a closed edge's range [0, 2 pi] as [0, 6.28318530717959]
+// (measured in FreeCAD 0.20 on the fragments of a box and a ball, whose vertices and tolerances
+// come back exact), and the grids, which follow the parameters, part ways from there. The tests
+// of the meshing take the string's shape, as FreeCAD gives it.
 BrepInput input_through_string(const TopoDS_Shape& shape, const std::string& name = "test shape");
 
 // The volume of tetrahedron t of a mesh, from its corners (straight-sided), and of the whole mesh.

@@ -30,7 +30,8 @@ namespace {
 
 TEST(BrepSurfaceFlips, SphereInBoxAtItsCoarsestCountsReachesTwentyDegrees) {
   // through a BREP string, as FreeCAD hands a shape over (the shape as the fuse left it in memory
-  // meshes differently: its grids are not the same)
+  // meshes differently: its grids are not the same, its parameters differing in the last digits,
+  // see occ_checks.hpp)
   const BrepInput in = test::input_through_string(test::make_sphere_in_box(), "sphere in box");
   const Vec3 centre(2, 2, 2);
   std::int64_t flips = 0;
