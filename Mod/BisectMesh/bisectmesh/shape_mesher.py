@@ -265,19 +265,20 @@ def _femmesh_from_arrays(out, faces, solids, tick, read):
     region, tri_tag = np.asarray(out["region"]), np.asarray(out["tri_tag"])
     quadratic = tets.shape[1] == 10
     weights = _item_weights(quadratic)
-    total = max(1.0, len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2] + faces + solids)
+    done = len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2]  # the items' share, once in
+    total = max(1.0, done + faces + solids)
     # a progress call every 5,000 items: about 50 ms of FreeCAD's adding of tetra10 (Stop within
     # 0.5 s). The arrays become Python lists a slice at a time: one tolist() of 10^6 tetra10 holds
     # the GIL for a second and more, and the window with it.
     step = 5000
     perm = list(TET10_PERMUTATION if quadratic else TET4_PERMUTATION)
     first = len(tets) + 1  # the triangles' ids follow the tetrahedra's
-    done = len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2]
-    mesh = read_femmesh(nodes, [(tets[:, perm], 3), (tris, 2)]) if read else None
+    ordered = tets[:, perm]
+    mesh = read_femmesh(nodes, [(ordered, 3), (tris, 2)]) if read else None
     if mesh is not None:
         tick(done / total)
     else:
-        mesh = _femmesh_by_calls(nodes, tets[:, perm], tris, step, lambda fraction: tick(fraction * done / total))
+        mesh = _femmesh_by_calls(nodes, ordered, tris, weights, step, lambda added: tick(added / total))
     # FreeCAD 0.20's addGroupElements walks every element of the group's kind at each call (lug at
     # 10^6: 221 calls of 5,000 ids took 3.5 s, 16 ms each; all 15 groups in one call each 1.5 s,
     # about 1 us an id besides the walks), so the main thread gives each group's ids in one call
@@ -301,13 +302,12 @@ def _femmesh_from_arrays(out, faces, solids, tick, read):
     return mesh
 
 
-def _femmesh_by_calls(nodes, tets, tris, step, tick):
+def _femmesh_by_calls(nodes, tets, tris, weights, step, tick):
     """A ``Fem.FemMesh`` of nodes (ids 1..N), tetrahedra in FreeCAD's node order (1..T) and
-    triangles (T+1..), one FreeCAD call per item, ``tick(fraction)`` after each slice of ``step``."""
+    triangles (T+1..), one FreeCAD call per item; after each slice of ``step`` items,
+    ``tick(added)``, the items added so far weighed by ``weights`` (:func:`_item_weights`)."""
     import Fem
 
-    weights = _item_weights(tets.shape[1] == 10)
-    total = max(1.0, len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2])
     mesh = Fem.FemMesh()
     add_node, add_volume, add_face = mesh.addNode, mesh.addVolume, mesh.addFace
     done = 0.0
@@ -318,5 +318,5 @@ def _femmesh_by_calls(nodes, tets, tris, step, tick):
             for i, row in enumerate(rows, first_id + start):
                 add(row, i)
             done += len(rows) * weight
-            tick(done / total)
+            tick(done)
     return mesh
