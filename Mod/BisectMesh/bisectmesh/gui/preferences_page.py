@@ -111,21 +111,37 @@ def _spin(name, low, high, tooltip):
     return spin
 
 
-_registered = []
+class _CurrentPage:
+    """What the dialog is given: it makes the page of the bisectmesh package imported now. The
+    dialog keeps every class it was given for the session, and two copies of the workbench (the
+    user's Mod folder and another, or a reloaded package) would each add a tab; this one class,
+    added once, always builds the page from the code that is loaded."""
+
+    def __init__(self):
+        import importlib
+
+        page = importlib.import_module(__name__).PreferencesPage()
+        self.form = page.form
+        self.loadSettings = page.loadSettings
+        self.saveSettings = page.saveSettings
+
+
+_REGISTERED = "_bisectmesh_preferences_page"  # FreeCADGui's attribute: set once the page is added
 
 
 def register():
-    """Adds the page to the preferences dialog once per session."""
-    if not _registered:
-        import os
+    """Adds the page to the preferences dialog once per session, whichever copy asks."""
+    import os
 
-        import FreeCADGui
+    import FreeCADGui
 
-        from . import icon_path
+    if getattr(FreeCADGui, _REGISTERED, False):
+        return
+    from . import icon_path
 
-        # the dialog takes the group's icon by name: preferences-bisectmesh(.svg) in an icon path
-        icon = icon_path("preferences-bisectmesh.svg")
-        if icon:
-            FreeCADGui.addIconPath(os.path.dirname(icon))
-        FreeCADGui.addPreferencePage(PreferencesPage, GROUP)
-        _registered.append(True)
+    # the dialog takes the group's icon by name: preferences-bisectmesh(.svg) in an icon path
+    icon = icon_path("preferences-bisectmesh.svg")
+    if icon:
+        FreeCADGui.addIconPath(os.path.dirname(icon))
+    FreeCADGui.addPreferencePage(_CurrentPage, GROUP)
+    setattr(FreeCADGui, _REGISTERED, True)
