@@ -130,7 +130,7 @@ void optimise_block(const Shared& s, Block& b) {
         const auto fv = cx.face(static_cast<Index>(t), f);
         const FaceKey g = tet::face_key(nodes[fv[0]], nodes[fv[1]], nodes[fv[2]]);
         if (!s.on_held[g.a] || !s.on_held[g.b] || !s.on_held[g.c]) continue;
-        if (cx.nb[t][f] >= 0) {
+        if (cx.neighbour(t, f) >= 0) {
           if (s.held.count(g)) held_faces.insert(tet::face_key(fv[0], fv[1], fv[2]));
         } else if (tagged) {
           const auto it = s.surface_tag.find(g);

@@ -36,7 +36,7 @@ bool hole_shape(const tet::TetComplex& cx, const std::vector<Index>& hole, const
   for (Index t : hole)
     for (int f = 0; f < 4; ++f) {
       all.push_back(cx.tet[t][f]);
-      const Index n = cx.nb[t][f];
+      const Index n = cx.neighbour(t, f);
       if (n >= 0 && std::binary_search(hole.begin(), hole.end(), n)) {
         if (cx.is_constrained(t, f)) return false;
         continue;
@@ -126,7 +126,7 @@ void close_over_folds(const tet::TetComplex& cx, const std::vector<Vec3>& X, con
     for (Index t : *hole) {
       if (inverted(X, cx.tet[t])) folds.push_back(t);
       for (int f = 0; f < 4; ++f) {
-        const Index n = cx.nb[t][f];
+        const Index n = cx.neighbour(t, f);
         if (n >= 0 && !cx.is_constrained(t, f) && cx.tag[n] == region && inverted(X, cx.tet[n])) folds.push_back(n);
       }
     }
@@ -143,7 +143,7 @@ void grow(const tet::TetComplex& cx, std::vector<Index>* hole) {
   const std::vector<Index> was = *hole;
   for (Index t : was)
     for (int f = 0; f < 4; ++f) {
-      const Index n = cx.nb[t][f];
+      const Index n = cx.neighbour(t, f);
       if (n >= 0 && !cx.is_constrained(t, f) && cx.tag[n] == cx.tag[t] && !std::binary_search(was.begin(), was.end(), n))
         hole->push_back(n);
     }

@@ -75,7 +75,7 @@ struct Running {
 bool flip23(tet::TetComplex& cx, Index t, int f, Running& run) {
   thread_local std::vector<Tet> fresh;  // kept from call to call: tried at every face of every poor tetrahedron
   if (!cx.flip23_tets(t, f, &fresh)) return false;
-  const Index n = cx.nb[t][f];
+  const Index n = cx.neighbour(t, f);
   const std::vector<Vec3>& X = cx.X;
   double sum = 0;
   const double need = std::min(cx.q[t], cx.q[n]);

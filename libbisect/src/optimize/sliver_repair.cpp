@@ -237,7 +237,7 @@ std::size_t repair_slivers(tet::TetComplex& cx, std::vector<Vec3>& X, const std:
       for (int f = 0; f < 4; ++f) {
         const auto fv = cx.face(t, f);
         const Vec3 n = (X[fv[1]] - X[fv[0]]).cross(X[fv[2]] - X[fv[0]]);
-        const bool b = cx.nb[t][f] < 0;
+        const bool b = cx.neighbour(t, f) < 0;
         if ((b && !on_boundary) || (b == on_boundary && n.squaredNorm() > outward.squaredNorm())) outward = n, on_boundary = b;
       }
       const Vec3 here = (X[u[0]] + X[u[1]] + X[u[2]] + X[u[3]]) / 4;

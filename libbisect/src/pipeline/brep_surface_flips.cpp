@@ -159,7 +159,7 @@ bool Flipper::flip(const Slot& s1, const Slot& s2, Index a, Index b) {
       if (next == s) break;
       const int f = cx_.corner_of(cur, chain[chain.size() - 2]);  // the face (p, q, next)
       if (cx_.is_constrained(cur, f) || chain.size() >= tet::TetComplex::kMaxRing) return false;
-      cur = cx_.nb[cur][f];
+      cur = cx_.neighbour(cur, f);
       ring.push_back(cur);
     }
     std::vector<tet::Tet> made;

@@ -24,7 +24,7 @@ void boundary_triangles(const PolyhedralModel& m, const mesh2d::FaceGrids& g, co
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
     if (cx.alive[t])
       for (int f = 0; f < 4; ++f)
-        if (cx.nb[t][f] < 0) {
+        if (cx.neighbour(t, f) < 0) {
           const auto fv = cx.face(static_cast<Index>(t), f);
           const auto tag = cx.surface_tag.find(tet::face_key(fv[0], fv[1], fv[2]));
           if (tag == cx.surface_tag.end()) throw MeshingError("a boundary face of the mesh lies on no input face (nodes " + std::to_string(fv[0] + 1) + ", " + std::to_string(fv[1] + 1) + ", " + std::to_string(fv[2] + 1) + ")");

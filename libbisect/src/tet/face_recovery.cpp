@@ -101,7 +101,7 @@ std::vector<std::array<Index, 3>> hole_faces(const TetComplex& dt, const std::ve
   std::vector<std::array<Index, 3>> out;
   for (Index t : cavity)
     for (int f = 0; f < 4; ++f)
-      if (dt.nb[t][f] < 0 || !in.count(dt.nb[t][f])) out.push_back(dt.face(t, f));
+      if (dt.neighbour(t, f) < 0 || !in.count(dt.neighbour(t, f))) out.push_back(dt.face(t, f));
   return out;
 }
 

@@ -86,7 +86,7 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
     const Index t = stack.back();
     stack.pop_back();
     for (int f = 0; f < 4; ++f) {
-      const Index u = dt.nb[t][f];
+      const Index u = dt.neighbour(t, f);
       if (u < 0) continue;
       const std::array<Index, 3> fc = dt.face(t, f);
       if (wanted.count(face_key(fc[0], fc[1], fc[2]))) continue;

@@ -52,7 +52,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   util::parallel_chunks(tet.size(), threads, kChunk, [&](std::size_t from, std::size_t to) {
     for (std::size_t t = from; t < to; ++t) q[t] = tet_angle_key(X, tet[t]);
   });
-  nb.assign(tet.size(), {-1, -1, -1, -1});
+  adj.assign(tet.size(), {-1, -1, -1, -1});
   alive.assign(tet.size(), 1);
   cmask_.assign(tet.size(), 0);
   born_.assign(tet.size(), ++clock_);
@@ -117,8 +117,8 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
       for (auto h = from; h != to && h + 1 != to;) {
         if (h->b == (h + 1)->b && h->c == (h + 1)->c) {  // a pair: neighbours (a third equal face pairs with a fourth)
           const Index t = h->tf / 4, u = (h + 1)->tf / 4;
-          nb[t][h->tf % 4] = u;
-          nb[u][(h + 1)->tf % 4] = t;
+          adj[t][h->tf % 4] = (h + 1)->tf;  // tf is 4 t + f already: the way back comes free
+          adj[u][(h + 1)->tf % 4] = h->tf;
           h += 2;
         } else {
           ++h;
@@ -232,12 +232,12 @@ std::array<Index, 3> TetComplex::face(Index t, int f) const {
   return {tet[t][c[0]], tet[t][c[1]], tet[t][c[2]]};
 }
 
-bool TetComplex::is_constrained(Index t, int f) const { return nb[t][f] < 0 || (cmask_[t] >> f & 1u); }
+bool TetComplex::is_constrained(Index t, int f) const { return adj[t][f] < 0 || (cmask_[t] >> f & 1u); }
 
 void TetComplex::hold(Index t, int f) {
   cmask_[t] |= static_cast<unsigned char>(1u << f);
-  const Index n = nb[t][f];
-  if (n >= 0) cmask_[n] |= static_cast<unsigned char>(1u << face_towards(n, t));
+  const Index n = neighbour(t, f);
+  if (n >= 0) cmask_[n] |= static_cast<unsigned char>(1u << neighbour_face(t, f));
 }
 
 int TetComplex::corner_of(Index t, Index v) const {
@@ -263,7 +263,7 @@ std::vector<Index> TetComplex::star(Index v, Index t0, std::size_t limit) const 
     const Index t = around[i];
     for (int f = 0; f < 4; ++f) {
       if (tet[t][f] == v) continue;  // face f is opposite corner f: the others hold v
-      const Index n = nb[t][f];
+      const Index n = neighbour(t, f);
       if (n < 0 || marked(n, in)) continue;
       mark_[n] = in;
       around.push_back(n);
@@ -274,7 +274,7 @@ std::vector<Index> TetComplex::star(Index v, Index t0, std::size_t limit) const 
 
 int TetComplex::face_towards(Index t, Index other) const {
   for (int f = 0; f < 4; ++f)
-    if (nb[t][f] == other) return f;
+    if (neighbour(t, f) == other) return f;
   return -1;
 }
 
@@ -286,13 +286,10 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
   for (Index o : old) mark_[o] = in_old;
   for (Index o : old)
     for (int f = 0; f < 4; ++f) {
-      const Index n = nb[o][f];
+      const Index n = neighbour(o, f);
       if (marked(n, in_old)) continue;
       const auto fv = face(o, f);
-      int nf = -1;
-      if (n >= 0)
-        for (int g = 0; g < 4; ++g)
-          if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) nf = g;
+      const int nf = n >= 0 ? neighbour_face(o, f) : -1;
       outer.push_back({face_key(fv[0], fv[1], fv[2]), n, nf, is_constrained(o, f)});
     }
   const Index inherited = old.empty() ? 0 : tag[old.front()];
@@ -313,7 +310,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       id = free_.back();
       free_.pop_back();
       tet[id] = t;
-      nb[id] = {-1, -1, -1, -1};
+      adj[id] = {-1, -1, -1, -1};
       alive[id] = 1;
       tag[id] = inherited;
       q[id] = tet_angle_key(X, t);
@@ -322,7 +319,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     } else {
       id = static_cast<Index>(tet.size());
       tet.push_back(t);
-      nb.push_back({-1, -1, -1, -1});
+      adj.push_back({-1, -1, -1, -1});
       alive.push_back(1);
       tag.push_back(inherited);
       q.push_back(tet_angle_key(X, t));
@@ -372,7 +369,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     const Side& a = sides[s.first];
     const bool fresh = a.fresh || (s.second >= 0 && sides[s.second].fresh);
     if (!fresh) {  // an old face no new tetrahedron took up: with new_boundary, the outer boundary
-      if (new_boundary && s.second < 0 && a.t >= 0) nb[a.t][a.f] = -1;
+      if (new_boundary && s.second < 0 && a.t >= 0) adj[a.t][a.f] = -1;
       continue;
     }
     if (s.second < 0 && new_boundary) continue;  // a new face of the outer boundary
@@ -384,8 +381,8 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     const Side& b = sides[s.second];
     const Side& x = a.fresh ? a : b;
     const Side& y = a.fresh ? b : a;
-    nb[x.t][x.f] = y.t;
-    if (y.t >= 0) nb[y.t][y.f] = x.t;
+    adj[x.t][x.f] = y.t >= 0 ? 4 * y.t + y.f : -1;
+    if (y.t >= 0) adj[y.t][y.f] = 4 * x.t + x.f;
     if (y.held && y.t >= 0) cmask_[x.t] |= static_cast<unsigned char>(1u << x.f);  // a kept constrained face
   }
   ++clock_;

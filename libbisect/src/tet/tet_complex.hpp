@@ -1,7 +1,8 @@
 // A tetrahedral complex that changes in place: the working structure of the boundary-constrained
 // min-max triangulation (thesis 7.6) and of the local transformations (7.5). Tetrahedra are
-// positively oriented (tet_mesh.hpp), face f lies opposite corner f, and nb[t][f] is the
-// tetrahedron across it (-1 on the boundary of what is being meshed). Every change goes through
+// positively oriented (tet_mesh.hpp), face f lies opposite corner f, and adj[t][f] is 4 u + g
+// for the tetrahedron u across it and u's face g there (HXT's convention: the way back is
+// stored, never searched), -1 on the boundary of what is being meshed. Every change goes through
 // `replace`, which swaps a set of tetrahedra for another set filling the same space and relinks
 // the new ones to each other and to the old outside neighbours, so a flip, a point insertion
 // and the removal of a helper vertex are each a few lines.
@@ -50,7 +51,10 @@ class TetComplex {
 
   const std::vector<Vec3>& X;
   std::vector<Tet> tet;
-  std::vector<Tet> nb;
+  std::vector<Tet> adj;  // 4 u + g, or -1 (above)
+  // The tetrahedron across face f of t (-1: none), and its face there (when there is one).
+  Index neighbour(Index t, int f) const { return adj[t][f] < 0 ? -1 : adj[t][f] >> 2; }
+  int neighbour_face(Index t, int f) const { return adj[t][f] & 3; }
   std::vector<char> alive;
   std::vector<Index> tag;  // per tetrahedron (its region); new ones take the first old one's
   std::vector<double> q;   // per tetrahedron: tet_angle_key, the min-max criterion
@@ -126,7 +130,9 @@ class TetComplex {
   // The live tetrahedra with corner v, found from t0 (one of them) across the faces at v, in
   // the order they are reached, t0 first; the search stops once more than `limit` are found.
   std::vector<Index> star(Index v, Index t0, std::size_t limit) const;
-  int face_towards(Index t, Index other) const;  // the face of t shared with `other`, -1 if none
+  // The face of t shared with `other`, -1 if none: a search, for checks; the complex's own
+  // steps read it from adj.
+  int face_towards(Index t, Index other) const;
 
   // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
   // when the walk does not settle); -1 when p is outside every tetrahedron.
@@ -183,7 +189,7 @@ class TetComplex {
 
  private:
   std::vector<Index> free_;
-  std::vector<unsigned char> cmask_;  // bit f: face f is constrained (besides nb < 0)
+  std::vector<unsigned char> cmask_;  // bit f: face f is constrained (besides adj < 0)
   // Edge removal remembers its failures: an edge whose ring of tetrahedra is unchanged since
   // (every one born before the failure, and no node moved) fails again, so its dynamic
   // programme is skipped. born_: a clock value per tetrahedron, set when made or moved.

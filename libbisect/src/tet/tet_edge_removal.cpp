@@ -20,17 +20,17 @@ using geom::orient3d;
 int TetComplex::edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index* apex, bool* closed, bool* held) const {
   *closed = *held = false;
   int k = 0;
-  Index cur = t, prev = -1;
+  Index cur = t;
+  int came_in = -1;  // the face of cur the walk came in by (-1 at t)
   while (k < cap) {
     ring[k++] = cur;
     // the two faces of cur through edge ab are those opposite its other two corners
     int next_face = -1;
     for (int f = 0; f < 4; ++f) {
       const Index opp = tet[cur][f];
-      if (opp == a || opp == b) continue;
-      if (nb[cur][f] == prev && prev >= 0) continue;
+      if (opp == a || opp == b || f == came_in) continue;
       next_face = f;
-      if (prev < 0) break;  // first step: either way round
+      if (came_in < 0) break;  // first step: either way round
     }
     if (next_face < 0) return k;
     if (is_constrained(cur, next_face)) {
@@ -40,12 +40,12 @@ int TetComplex::edge_ring(Index t, Index a, Index b, int cap, Index* ring, Index
     // the face crossed holds a, b and cur's fourth corner
     for (Index x : tet[cur])
       if (x != a && x != b && x != tet[cur][next_face]) apex[k - 1] = x;
-    const Index n = nb[cur][next_face];
+    const Index n = neighbour(cur, next_face);
     if (n == t) {
       *closed = true;
       return k;
     }
-    prev = cur;
+    came_in = neighbour_face(cur, next_face);
     cur = n;
   }
   return k + 1;  // longer than cap

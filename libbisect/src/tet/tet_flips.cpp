@@ -26,17 +26,17 @@ constexpr double kMinBoundaryAngle = 0.3490658503988659;
 }  // namespace
 
 bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
-  const Index n = nb[t][f];
+  const Index n = neighbour(t, f);
   const auto fv = face(t, f);
   const Index d = tet[t][f];
-  const int nf = face_towards(n, t);
+  const int nf = neighbour_face(t, f);
   const Index e = tet[n][nf];
   for (int k = 0; k < 3; ++k) {
     // the edge (x, y) of the shared face, its third node c: the faces (x, y, d) of t and
     // (x, y, e) of n are those opposite c
     const Index x = fv[k], y = fv[(k + 1) % 3], c = fv[(k + 2) % 3];
     const int ct = corner_of(t, c), cn = corner_of(n, c);
-    if (nb[t][ct] >= 0 || nb[n][cn] >= 0) continue;  // not two faces of the outer boundary
+    if (neighbour(t, ct) >= 0 || neighbour(n, cn) >= 0) continue;  // not two faces of the outer boundary
     const auto ft = face(t, ct), fn = face(n, cn);
     const auto tag_t = surface_tag.find(face_key(ft[0], ft[1], ft[2]));
     const auto tag_n = surface_tag.find(face_key(fn[0], fn[1], fn[2]));
@@ -67,12 +67,10 @@ bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& 
 }
 
 bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
-  const Index n = nb[t][f];
+  const Index n = neighbour(t, f);
   if (n < 0 || is_constrained(t, f)) return false;
   const auto fv = face(t, f);
-  Index e = -1;
-  for (int g = 0; g < 4; ++g)
-    if (tet[n][g] != fv[0] && tet[n][g] != fv[1] && tet[n][g] != fv[2]) e = tet[n][g];
+  const Index e = tet[n][neighbour_face(t, f)];  // n's corner opposite the shared face
   fresh->clear();
   for (Index c : fv) {  // each face corner of t replaced by e
     Tet m = tet[t];
@@ -86,7 +84,7 @@ bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
 bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
   std::vector<Tet>& fresh = fresh_;
   if (!flip23_tets(t, f, &fresh)) return false;
-  const Index n = nb[t][f];
+  const Index n = neighbour(t, f);
   const double need = std::min(q[t], q[n]) * (1 + 1e-9);
   for (const Tet& m : fresh)
     if (!(tet_angle_key(X, m) > need)) return false;  // the smallest solid angle would not rise
@@ -107,7 +105,7 @@ std::int64_t TetComplex::improve(std::vector<std::pair<Index, int>> queue, std::
       continue;
     }
     // edge removal costs a small dynamic programme per edge: only around a poor tetrahedron
-    if (std::min(q[t], q[nb[t][f]]) >= edge_removal_below) continue;
+    if (std::min(q[t], q[neighbour(t, f)]) >= edge_removal_below) continue;
     const auto fv = face(t, f);
     for (int e = 0; e < 3; ++e)
       if (try_edge_removal(t, fv[e], fv[(e + 1) % 3], queue)) {
@@ -131,7 +129,7 @@ std::int64_t TetComplex::improve_all(std::int64_t max_ops) {
   for (std::size_t t = 0; t < tet.size(); ++t)
     if (alive[t])
       for (int f = 0; f < 4; ++f)
-        if (nb[t][f] > static_cast<Index>(t)) queue.push_back({static_cast<Index>(t), f});
+        if (neighbour(t, f) > static_cast<Index>(t)) queue.push_back({static_cast<Index>(t), f});
   return improve(std::move(queue), max_ops);
 }
 

@@ -37,11 +37,11 @@ Index TetComplex::locate(const Vec3& p, Index start, bool near_only) const {
       if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) > 0) {
         // across the boundary: outside the cell, or (a cell that is star-shaped but not convex)
         // round a dent in it: only a search of every tetrahedron tells
-        if (nb[t][f] < 0) {
+        if (neighbour(t, f) < 0) {
           step = limit;
           break;
         }
-        t = nb[t][f];
+        t = neighbour(t, f);
         moved = true;
       }
     }
@@ -76,7 +76,7 @@ Index TetComplex::locate(const Vec3& p, Index start, bool near_only) const {
     if (holds(k)) return k;
     if (near_only && ++searched >= kNearSearch) return -1;
     for (int f = 0; f < 4; ++f) {
-      const Index u = nb[k][f];
+      const Index u = neighbour(k, f);
       if (u >= 0 && alive[u] && !marked(u, seen)) mark_[u] = seen, near.push({distance(u), u});
     }
   }
@@ -96,7 +96,7 @@ bool TetComplex::holders(const Vec3& p, Index t0, std::vector<Index>* hold) cons
       if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) != 0) continue;
       ++zeros;
       if (is_constrained(t, f)) return false;  // on the boundary: not ours to split
-      if (std::find(hold->begin(), hold->end(), nb[t][f]) == hold->end()) hold->push_back(nb[t][f]);
+      if (std::find(hold->begin(), hold->end(), neighbour(t, f)) == hold->end()) hold->push_back(neighbour(t, f));
     }
     if (zeros >= 3) return false;  // on a node
   }
@@ -131,7 +131,7 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector
   for (Index t : seed) mark_[t] = in_cavity;
   for (std::size_t i = 0; i < cavity.size(); ++i)
     for (int f = 0; f < 4; ++f) {
-      const Index n = nb[cavity[i]][f];
+      const Index n = neighbour(cavity[i], f);
       if (n < 0 || marked(n, in_cavity) || is_constrained(cavity[i], f)) continue;
       const Tet& u = tet[n];
       if (geom::insphere(X[u[0]], X[u[1]], X[u[2]], X[u[3]], p) > 0) {
@@ -148,7 +148,7 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector
     for (Index t : cavity) {
       bool sees = true;
       for (int f = 0; f < 4 && sees && !is_seed(t); ++f) {
-        if (marked(nb[t][f], current)) continue;
+        if (marked(neighbour(t, f), current)) continue;
         const auto fv = face(t, f);
         sees = orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) < 0;
       }
@@ -162,7 +162,7 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector
     for (Index t : seed) mark_[t] = reached;
     for (std::size_t i = 0; i < front.size(); ++i)
       for (int f = 0; f < 4; ++f) {
-        const Index n = nb[front[i]][f];
+        const Index n = neighbour(front[i], f);
         if (n < 0 || !marked(n, in_kept) || is_constrained(front[i], f)) continue;
         mark_[n] = reached;
         front.push_back(n);
@@ -175,11 +175,11 @@ std::vector<Index> TetComplex::insert_delaunay(Index v, Index start, std::vector
   // two arms of the cavity may meet across a constrained face: it must stay, so v does not go in
   for (Index t : cavity)
     for (int f = 0; f < 4; ++f)
-      if (marked(nb[t][f], final_mark) && is_constrained(t, f)) return {};
+      if (marked(neighbour(t, f), final_mark) && is_constrained(t, f)) return {};
   std::vector<Tet> fresh;
   for (Index t : cavity)
     for (int f = 0; f < 4; ++f) {
-      const Index n = nb[t][f];
+      const Index n = neighbour(t, f);
       if (marked(n, final_mark)) continue;
       const auto fv = face(t, f);
       if (orient3d(X[fv[0]], X[fv[1]], X[fv[2]], p) >= 0) continue;  // a seed face p lies on

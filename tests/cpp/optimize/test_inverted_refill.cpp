@@ -42,7 +42,7 @@ std::set<std::array<Index, 3>> outer_faces(const TetComplex& cx) {
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
     if (cx.alive[t])
       for (int f = 0; f < 4; ++f)
-        if (cx.nb[t][f] < 0) {
+        if (cx.neighbour(t, f) < 0) {
           std::array<Index, 3> k = cx.face(static_cast<Index>(t), f);
           std::sort(k.begin(), k.end());
           out.insert(k);

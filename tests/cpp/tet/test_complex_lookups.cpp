@@ -15,8 +15,9 @@ namespace {
 
 using optimize::GridCube;
 
-// every face and the tetrahedron across it, as the build's definition says: faces with the same
-// three nodes are neighbours, in pairs in the order of the tetrahedra
+// every face and the tetrahedron across it with its face there (4 u + g, as TetComplex::adj holds
+// them), as the build's definition says: faces with the same three nodes are neighbours, in pairs
+// in the order of the tetrahedra
 std::vector<Tet> pairs_by_map(const TetComplex& cx) {
   std::vector<Tet> want(cx.tet.size(), Tet{-1, -1, -1, -1});
   std::map<std::array<Index, 3>, std::pair<Index, int>> open;
@@ -31,8 +32,8 @@ std::vector<Tet> pairs_by_map(const TetComplex& cx) {
       if (it == open.end()) {
         open.emplace(key, std::make_pair(static_cast<Index>(t), f));
       } else {
-        want[t][f] = it->second.first;
-        want[it->second.first][it->second.second] = static_cast<Index>(t);
+        want[t][f] = 4 * it->second.first + it->second.second;
+        want[it->second.first][it->second.second] = static_cast<Index>(4 * t + f);
         open.erase(it);
       }
     }
@@ -47,19 +48,20 @@ TEST(ComplexLookups, BuildMatchesEveryFaceWithTheTetrahedronAcross) {
   std::size_t boundary = 0;
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
     for (int f = 0; f < 4; ++f) {
-      const Index n = cx.nb[t][f];
+      const Index n = cx.neighbour(t, f);
       if (n < 0) {
         ++boundary;
         continue;
       }
       const int back = cx.face_towards(n, static_cast<Index>(t));
       ASSERT_GE(back, 0) << "tetrahedron " << t << " face " << f;
+      EXPECT_EQ(cx.neighbour_face(t, f), back) << "the way back, stored";
       const auto a = cx.face(static_cast<Index>(t), f), b = cx.face(n, back);
       const FaceKey ka = face_key(a[0], a[1], a[2]), kb = face_key(b[0], b[1], b[2]);
       EXPECT_TRUE(ka == kb) << "tetrahedron " << t << " face " << f;
     }
   EXPECT_EQ(boundary, 12u);  // the cube's two triangles a side, nothing else open
-  EXPECT_EQ(cx.nb, pairs_by_map(cx));
+  EXPECT_EQ(cx.adj, pairs_by_map(cx));
 }
 
 TEST(ComplexLookups, AThirdTetrahedronOnAFaceIsLeftOpenAsInItsOrder) {
@@ -68,9 +70,9 @@ TEST(ComplexLookups, AThirdTetrahedronOnAFaceIsLeftOpenAsInItsOrder) {
   const std::vector<Vec3> X{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {0.2, 0.2, 2}};
   TetComplex cx(X);
   cx.build({{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}});
-  EXPECT_EQ(cx.nb, pairs_by_map(cx));
-  EXPECT_EQ(cx.nb[0][3], 1);
-  EXPECT_EQ(cx.nb[2][3], -1);
+  EXPECT_EQ(cx.adj, pairs_by_map(cx));
+  EXPECT_EQ(cx.neighbour(0, 3), 1);
+  EXPECT_EQ(cx.neighbour(2, 3), -1);
 }
 
 // the grid cube's tetrahedra with their centroid off the corner x, y > 0.55: an L-shaped complex,

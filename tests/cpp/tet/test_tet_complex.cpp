@@ -15,17 +15,19 @@
 namespace bisect::tet {
 namespace {
 
-// Every live tetrahedron positive, adjacency symmetric and matching shared faces.
+// Every live tetrahedron positive, adjacency symmetric and matching shared faces, and the face
+// stored as the way back (adj's 4 u + g) the one that leads back.
 void expect_consistent(const TetComplex& cx) {
   for (std::size_t t = 0; t < cx.tet.size(); ++t) {
     if (!cx.alive[t]) continue;
     EXPECT_TRUE(positive(cx.X, cx.tet[t])) << t;
     for (int f = 0; f < 4; ++f) {
-      const Index n = cx.nb[t][f];
+      const Index n = cx.neighbour(t, f);
       if (n < 0) continue;
       ASSERT_TRUE(cx.alive[n]);
       const int g = cx.face_towards(n, static_cast<Index>(t));
       ASSERT_GE(g, 0) << "adjacency not symmetric";
+      EXPECT_EQ(cx.neighbour_face(t, f), g) << "tetrahedron " << t << " face " << f << ": the stored way back";
       const auto a = cx.face(static_cast<Index>(t), f), b = cx.face(n, g);
       EXPECT_TRUE(face_key(a[0], a[1], a[2]) == face_key(b[0], b[1], b[2]));
     }
@@ -42,7 +44,7 @@ std::size_t boundary_faces(const TetComplex& cx) {
   std::size_t n = 0;
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
     if (cx.alive[t])
-      for (int f = 0; f < 4; ++f) n += cx.nb[t][f] < 0;
+      for (int f = 0; f < 4; ++f) n += cx.neighbour(t, f) < 0;
   return n;
 }
 
@@ -164,7 +166,7 @@ std::vector<std::pair<Tet, Tet>> neighbour_relation(const TetComplex& cx) {
   for (std::size_t t = 0; t < cx.tet.size(); ++t) {
     if (!cx.alive[t]) continue;
     for (int f = 0; f < 4; ++f) {
-      const Index n = cx.nb[t][f];
+      const Index n = cx.neighbour(t, f);
       Tet a = cx.tet[t], b{-1, -1, -1, -1};
       if (n >= 0) b = cx.tet[n];
       std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
@@ -199,7 +201,7 @@ TEST(TetComplex, ReplacementsSmallAndLargeKeepTheAdjacency) {
   EXPECT_EQ(neighbour_relation(cx), neighbour_relation(fresh));
   // a set that does not fill the space it replaces: two tetrahedra for one, and a star less one
   {
-    const std::vector<Index> two{star[0], cx.nb[star[0]][0] >= 0 ? cx.nb[star[0]][0] : cx.nb[star[0]][1]};
+    const std::vector<Index> two{star[0], cx.neighbour(star[0], 0) >= 0 ? cx.neighbour(star[0], 0) : cx.neighbour(star[0], 1)};
     EXPECT_THROW(cx.replace(two, {cx.tet[two[0]]}), MeshingError);
   }
   TetComplex again(X);
@@ -232,7 +234,7 @@ TEST(TetComplex, TheSameComplexIsBuiltOnAnyNumberOfThreads) {
     TetComplex many(X);
     many.build(tets, {}, threads);
     many.constrain(held, threads);
-    EXPECT_EQ(many.nb, one.nb) << threads << " threads";
+    EXPECT_EQ(many.adj, one.adj) << threads << " threads";
     EXPECT_EQ(many.q, one.q) << threads << " threads";
     std::size_t differ = 0, constrained = 0;
     for (std::size_t t = 0; t < tets.size(); ++t)
@@ -315,7 +317,7 @@ TEST(TetComplex, TwoTwoFlipTakesTheBoundarysOtherDiagonal) {
     cx.build(t);
     for (std::size_t k = 0; k < 2; ++k)
       for (int f = 0; f < 4; ++f)
-        if (cx.nb[k][f] < 0) {
+        if (cx.neighbour(k, f) < 0) {
           const auto fv = cx.face(static_cast<Index>(k), f);
           const bool bottom = std::find(fv.begin(), fv.end(), c) == fv.end();
           cx.surface_tag[face_key(fv[0], fv[1], fv[2])] = bottom ? (k == 0 ? tag_d : tag_e) : 9;
@@ -416,8 +418,8 @@ TEST(TetComplex, ReplaceTakesOutABoundaryCapAndHoldMarksBothSides) {
   EXPECT_TRUE(cx.is_constrained(cap, cx.face_towards(cap, rest)));
   EXPECT_TRUE(cx.replace({cap}, {}, true).empty());
   EXPECT_EQ(cx.live_count(), 1u);
-  EXPECT_EQ(cx.nb[rest][shared], -1);
-  for (int f = 0; f < 4; ++f) EXPECT_EQ(cx.nb[rest][f], -1);
+  EXPECT_EQ(cx.neighbour(rest, shared), -1);
+  for (int f = 0; f < 4; ++f) EXPECT_EQ(cx.neighbour(rest, f), -1);
 }
 
 TEST(TetComplex, LocateFindsAPointRoundADent) {

@@ -58,8 +58,10 @@ TEST(Undo, TakesBackFlipsAndInsertionsToTheSameMesh) {
   for (std::size_t t = 0; t < cx.tet.size(); ++t)
     if (cx.alive[t])
       for (int f = 0; f < 4; ++f) {
-        const Index n = cx.nb[t][f];
-        if (n >= 0) EXPECT_EQ(cx.face_towards(n, static_cast<Index>(t)) >= 0, true);
+        const Index n = cx.neighbour(t, f);
+        if (n >= 0) {
+          EXPECT_EQ(cx.face_towards(n, static_cast<Index>(t)), cx.neighbour_face(t, f));
+        }
       }
   EXPECT_GT(cx.improve_all(std::numeric_limits<std::int64_t>::max()), 0);
 }
