@@ -1,7 +1,8 @@
 // The exact predicates against exact rational arithmetic (GMP's mpq_class: a double converts
-// to it exactly). The reference determinants are written independently of the library's: other
-// pivots, generic Laplace expansions, and their sign conventions are themselves checked
-// against the geometric meaning (circumcentres computed in rationals).
+// to it exactly). The reference determinants (predicates_reference.hpp) are written
+// independently of the library's, and their sign conventions are themselves checked here
+// against the geometric meaning (circumcentres computed in rationals). The expansion arithmetic
+// underneath: test_expansion.cpp.
 //
 // Every configuration is checked twice: through the public predicate (filter, then exact
 // stage) and through the exact stage alone (detail::*_exact), so that the exact stage is also
@@ -17,85 +18,20 @@
 #include <random>
 #include <vector>
 
-#include "geom/expansion.hpp"
 #include "geom/predicates.hpp"
 #include "geom/predicates_detail.hpp"
+#include "predicates_reference.hpp"
 
 namespace bisect::geom {
 namespace {
 
-using Q = mpq_class;
+using reference::det3;
+using reference::Q;
+using reference::ref_incircle;
+using reference::ref_insphere;
+using reference::ref_orient2d;
+using reference::ref_orient3d;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// ---- Reference determinants ----------------------------------------------------------------
-
-Q det3(const Q m[3][3]) {
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-         m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-// Laplace expansion along the first row.
-Q det4(const Q m[4][4]) {
-  Q total = 0;
-  for (int j = 0; j < 4; ++j) {
-    Q minor[3][3];
-    for (int r = 1; r < 4; ++r)
-      for (int c = 0, k = 0; c < 4; ++c)
-        if (c != j) minor[r - 1][k++] = m[r][c];
-    const Q term = m[0][j] * det3(minor);
-    if (j % 2 == 0)
-      total += term;
-    else
-      total -= term;
-  }
-  return total;
-}
-
-int ref_orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-  // The definition: the z component of (b - a) x (c - a).
-  const Q bx = Q(b.x()) - a.x(), by = Q(b.y()) - a.y();
-  const Q cx = Q(c.x()) - a.x(), cy = Q(c.y()) - a.y();
-  return sgn(Q(bx * cy - by * cx));
-}
-
-int ref_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  // The definition of predicates.hpp: (b - a) . ((c - a) x (d - a)).
-  Q u[3], v[3], w[3];
-  for (int k = 0; k < 3; ++k) {
-    u[k] = Q(b[k]) - a[k];
-    v[k] = Q(c[k]) - a[k];
-    w[k] = Q(d[k]) - a[k];
-  }
-  const Q x = v[1] * w[2] - v[2] * w[1], y = v[2] * w[0] - v[0] * w[2],
-          z = v[0] * w[1] - v[1] * w[0];
-  return sgn(Q(u[0] * x + u[1] * y + u[2] * z));
-}
-
-// The lifted determinant with rows (p - a, |p - a|^2) for p = b, c, d; the 4x4 determinant
-// with rows (x, y, x^2 + y^2, 1), positive for d inside a counterclockwise abc, is its negative.
-int ref_incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const Vec2* p[3] = {&b, &c, &d};
-  Q m[3][3];
-  for (int i = 0; i < 3; ++i) {
-    m[i][0] = Q((*p[i]).x()) - a.x();
-    m[i][1] = Q((*p[i]).y()) - a.y();
-    m[i][2] = m[i][0] * m[i][0] + m[i][1] * m[i][1];
-  }
-  return -sgn(det3(m));
-}
-
-// Likewise rows (p - a, |p - a|^2) for p = b, c, d, e; the sign convention of predicates.hpp
-// is its negative (checked by ReferenceMatchesGeometry).
-int ref_insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
-  const Vec3* p[4] = {&b, &c, &d, &e};
-  Q m[4][4];
-  for (int i = 0; i < 4; ++i) {
-    for (int k = 0; k < 3; ++k) m[i][k] = Q((*p[i])[k]) - a[k];
-    m[i][3] = m[i][0] * m[i][0] + m[i][1] * m[i][1] + m[i][2] * m[i][2];
-  }
-  return -sgn(det4(m));
-}
 
 // ---- The four predicates behind one interface ----------------------------------------------
 
@@ -626,74 +562,6 @@ TEST(PredicatesStages, BigIntegersAlone) {
                       true);
   }
   EXPECT_EQ(t.wrong, 0);
-}
-
-// ---- The expansion arithmetic itself --------------------------------------------------------
-
-template <int N>
-Q value_of(const expansion::Expansion<N>& e) {
-  Q s = 0;
-  for (int i = 0; i < e.n; ++i) s += Q(e.c[i]);
-  return s;
-}
-
-// Exponent of the lowest set bit of a nonzero double.
-int lowest_bit(double x) {
-  int e;
-  double m = std::frexp(std::fabs(x), &e);  // x = m 2^e, m in [0.5, 1)
-  int low = e;
-  while (m != std::floor(m)) {
-    m *= 2;
-    --low;
-  }
-  return low;
-}
-
-// Components nonzero, increasing in magnitude and nonoverlapping: the highest bit of each lies
-// below the lowest bit of the next.
-template <int N>
-bool well_formed(const expansion::Expansion<N>& e) {
-  for (int i = 0; i < e.n; ++i) {
-    if (e.c[i] == 0.0) return false;
-    if (i + 1 < e.n && std::ilogb(e.c[i]) >= lowest_bit(e.c[i + 1])) return false;
-  }
-  return true;
-}
-
-TEST(PredicatesExpansion, ExactAgainstGmp) {
-  using namespace expansion;
-  Rng rng(808);
-  auto x = [&rng]() { return std::ldexp(uniform(rng, -1.0, 1.0), uniform_int(rng, -60, 60)); };
-  int checked = 0;
-  for (int n = 0; n < 20000; ++n) {
-    const double a = x(), b = x(), c = x(), d = x(), e = x();
-    const auto p = diff(a, b) * diff(c, d);         // 2 x 2
-    const auto q = product(a, e) - diff(d, b) * c;  // 2 - 2 * 1
-    const auto r = (p + q) * (p - q * e);           // longer operands
-    const Q qa(a), qb(b), qc(c), qd(d), qe(e);
-    const Q wp = (qa - qb) * (qc - qd), wq = qa * qe - (qd - qb) * qc;
-    ASSERT_EQ(value_of(p), wp);
-    ASSERT_EQ(value_of(q), wq);
-    ASSERT_EQ(value_of(r), Q((wp + wq) * (wp - wq * qe)));
-    ASSERT_TRUE(well_formed(p) && well_formed(q) && well_formed(r));
-    ASSERT_EQ(r.sign(), sgn(Q((wp + wq) * (wp - wq * qe))));
-    ++checked;
-  }
-  EXPECT_EQ(checked, 20000);
-}
-
-// An operation whose result might not fit the capped capacity flags it, and the flag spreads.
-TEST(PredicatesExpansion, OverflowIsFlagged) {
-  using namespace expansion;
-  Expansion<40> sparse;  // 2^0 + 2^-2 + ... + 2^-78: 40 nonadjacent components
-  sparse.n = 0;
-  for (int i = 39; i >= 0; --i) sparse.c[sparse.n++] = std::ldexp(1.0, -2 * i);
-  ASSERT_TRUE(well_formed(sparse));
-  const auto square = sparse * sparse;  // 2 * 40 * 40 > kMaxCapacity
-  EXPECT_TRUE(square.overflow);
-  EXPECT_TRUE((square + sparse).overflow);
-  EXPECT_FALSE((sparse + sparse).overflow);
-  EXPECT_EQ(value_of(sparse + sparse), 2 * value_of(sparse));
 }
 
 // Inputs with no meaningful sign still return, without crashing or looping.

@@ -1,6 +1,6 @@
 // Tetrahedral mesh readers and writers (io/mesh_io.cpp and the per-format files): round trips
-// through every format, files written by gmsh 4.8 (tests/data/meshes), the .unv structure, and
-// the errors bad input must raise.
+// through every format, files written by gmsh 4.8 (tests/data/meshes), the .unv structure and
+// .vtu's variants (bad input: test_mesh_io_errors.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,84 +16,15 @@
 #include "bisect/io.hpp"
 #include "input_error.hpp"
 #include "io/mesh_formats.hpp"
+#include "mesh_io_grid.hpp"
 
 namespace bisect {
 namespace {
 
 const std::string kData = std::string(BISECT_TEST_DATA) + "/meshes/";
 
-long double six_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const long double ux = (long double)b.x() - a.x(), uy = (long double)b.y() - a.y(), uz = (long double)b.z() - a.z();
-  const long double vx = (long double)c.x() - a.x(), vy = (long double)c.y() - a.y(), vz = (long double)c.z() - a.z();
-  const long double wx = (long double)d.x() - a.x(), wy = (long double)d.y() - a.y(), wz = (long double)d.z() - a.z();
-  return ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
-}
-
-// n^3 cells of a rectilinear grid whose coordinates have no short decimal form, each cell cut
-// into the 6 Kuhn tetrahedra (positively oriented). Region 1 where the cell lies at i >= n/2,
-// so the regions interleave in tetrahedron order. Boundary triangles (outward, tag = side 0..5)
-// and the interface between the regions (tag 6), in order 2 with mid-edge nodes everywhere.
-TetMesh grid_mesh(int n, int order) {
-  TetMesh m;
-  m.order = order;
-  auto coord = [&](int i, double p, double len) { return len * std::pow(i / double(n), p); };
-  std::vector<std::array<int, 3>> lattice;
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        m.nodes.emplace_back(coord(i, 1.3, 1.1), coord(j, 1.1, 0.7), coord(k, 1.7, std::sqrt(2.0)));
-        lattice.push_back({i, j, k});
-      }
-  auto id = [&](int i, int j, int k) { return Index(i + (n + 1) * (j + (n + 1) * k)); };
-  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  std::vector<std::array<Index, 4>> corners;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (auto& p : perms) {
-          int c[3] = {i, j, k};
-          std::array<Index, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[p[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          if (six_volume(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]) < 0) std::swap(t[1], t[2]);
-          corners.push_back(t);
-          m.region.push_back(2 * i >= n ? 1 : 0);
-        }
-  std::map<std::pair<Index, Index>, Index> mids;
-  auto mid = [&](Index a, Index b) {
-    auto key = std::minmax(a, b);
-    auto it = mids.find(key);
-    if (it != mids.end()) return it->second;
-    m.nodes.push_back(0.5 * (m.nodes[a] + m.nodes[b]));
-    return mids[key] = Index(m.nodes.size() - 1);
-  };
-  for (std::size_t t = 0; t < corners.size(); ++t) {
-    const auto& c = corners[t];
-    for (Index v : c) m.tets.push_back(v);
-    if (order == 2)
-      for (auto& e : kTetEdge) m.tets.push_back(mid(c[e[0]], c[e[1]]));
-    for (int f = 0; f < 4; ++f) {
-      const auto& fv = kTetFace[f];
-      const Index a = c[fv[0]], b = c[fv[1]], d = c[fv[2]];
-      int tag = -1;
-      for (int axis = 0; axis < 3 && tag < 0; ++axis) {
-        const int la = lattice[a][axis];
-        if (la != lattice[b][axis] || la != lattice[d][axis]) continue;
-        if (la == 0) tag = 2 * axis;
-        else if (la == n) tag = 2 * axis + 1;
-        else if (axis == 0 && 2 * la == n && m.region[t] == 0) tag = 6;
-      }
-      if (tag < 0) continue;
-      m.tris.insert(m.tris.end(), {a, b, d});
-      if (order == 2) m.tris.insert(m.tris.end(), {mid(a, b), mid(b, d), mid(d, a)});
-      m.tri_tag.push_back(tag);
-    }
-  }
-  return m;
-}
+using test::grid_mesh;
+using test::six_volume;
 
 void expect_same(const TetMesh& a, const TetMesh& b, bool with_tris) {
   EXPECT_EQ(a.order, b.order);
@@ -545,123 +476,6 @@ TEST(MeshIoVtu, MissingRegionIsZero) {
   const TetMesh m = meshio::read_vtu(in, "noregion.vtu");
   EXPECT_EQ(m.num_tets(), 6u);
   EXPECT_EQ(m.region, std::vector<Index>(6, 0));
-}
-
-// ---- bad input ----
-
-using bisect::test::error_of;
-
-std::string read_error(Reader r, const std::string& text, const std::string& name) {
-  return error_of([&] {
-    std::istringstream in(text);
-    r(in, name);
-  });
-}
-
-TEST(MeshIoErrors, UnknownExtension) {
-  const TetMesh m = grid_mesh(1, 1);
-  std::string e = error_of([&] { write_mesh(m, testing::TempDir() + "x.stl"); });
-  EXPECT_NE(e.find(".vtu, .msh"), std::string::npos) << e;
-  EXPECT_NE(e.find(".unv"), std::string::npos) << e;
-  e = error_of([&] { read_mesh("mesh.unv"); });
-  EXPECT_NE(e.find("supported: .vtu, .msh"), std::string::npos) << e;
-  e = error_of([&] { read_mesh("noext"); });
-  EXPECT_NE(e.find("(no extension)"), std::string::npos) << e;
-  e = error_of([&] { read_mesh(testing::TempDir() + "does-not-exist.msh"); });
-  EXPECT_NE(e.find("cannot open"), std::string::npos) << e;
-}
-
-TEST(MeshIoErrors, TruncatedMsh) {
-  std::ifstream in(kData + "box2_o1.msh");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t cut = text.find("$Elements") + 200;  // inside the element blocks
-  const long lines = long(std::count(text.begin(), text.begin() + cut, '\n')) + 1;
-  const std::string e = read_error(meshio::read_msh, text.substr(0, cut), "cut.msh");
-  EXPECT_EQ(e.rfind("cut.msh:", 0), 0u) << e;
-  EXPECT_NE(e.find(":" + std::to_string(lines) + ":"), std::string::npos) << e;
-  // Cut at the very end of the last element line: the missing $EndElements is reported.
-  const std::string e2 = read_error(meshio::read_msh, text.substr(0, text.find("$EndElements")), "cut2.msh");
-  EXPECT_NE(e2.find("end of file"), std::string::npos) << e2;
-}
-
-TEST(MeshIoErrors, UndefinedNode) {
-  std::stringstream s;
-  meshio::write_msh(grid_mesh(1, 1), s);
-  std::string t = s.str();
-  // Element 3 (a tetrahedron: our writer numbers them first) gets node 99.
-  const std::size_t block = t.find("\n3 1 4 6\n", t.find("$Elements"));
-  const std::size_t at = t.find("\n3 ", block + 1);
-  t.replace(at + 3, t.find(' ', at + 3) - (at + 3), "99");
-  std::string e = read_error(meshio::read_msh, t, "bad.msh");
-  EXPECT_NE(e.find("element 3 references node 99"), std::string::npos) << e;
-
-  const std::string inp = "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n*ELEMENT, TYPE=C3D4\n7, 1, 2, 3, 4\n8, 1, 2,\n 4, 5\n";
-  e = read_error(meshio::read_inp, inp, "bad.inp");
-  EXPECT_EQ(e, "bad.inp:8: element 8 references node 5, which is not defined");
-}
-
-TEST(MeshIoErrors, BinaryMshAndOtherVersions) {
-  std::string e = read_error(meshio::read_msh, "$MeshFormat\n4.1 1 8\n\x01\x00\x00\x00\n$EndMeshFormat\n", "bin.msh");
-  EXPECT_EQ(e, "bin.msh:2: binary .msh is not supported, re-export with -format msh41 ASCII (gmsh -bin 0)");
-  e = read_error(meshio::read_msh, "$MeshFormat\n4 0 8\n$EndMeshFormat\n", "v40.msh");
-  EXPECT_NE(e.find("4.1 or 2.2"), std::string::npos) << e;
-  e = read_error(meshio::read_msh, "solid x\n", "stl.msh");
-  EXPECT_NE(e.find("not a Gmsh .msh file"), std::string::npos) << e;
-}
-
-TEST(MeshIoErrors, MixedOrders) {
-  std::stringstream s;
-  meshio::write_vtu(grid_mesh(1, 1), s);
-  std::string t = s.str();
-  // Turn the first tetrahedron into a 10-node one by pointing its offsets and type at more nodes.
-  const std::size_t types = t.find("10 ", t.find("Name=\"types\""));
-  t.replace(types, 2, "24");
-  std::string e = read_error(meshio::read_vtu, t, "mixed.vtu");
-  EXPECT_NE(e.find("mixed.vtu:"), std::string::npos) << e;
-  EXPECT_NE(e.find("cell 0 of type 24 has 4 points"), std::string::npos) << e;
-
-  const std::string two =
-      "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"10\" NumberOfCells=\"2\">\n"
-      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
-      "0 0 0 1 0 0 0 1 0 0 0 1 .5 0 0 .5 .5 0 0 .5 0 0 0 .5 .5 0 .5 0 .5 .5</DataArray></Points>\n"
-      "<Cells><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 3\n0 1 2 3 4 5 6 7 8 9</DataArray>\n"
-      "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">4 14</DataArray>\n"
-      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10 24</DataArray></Cells></Piece></UnstructuredGrid></VTKFile>\n";
-  e = read_error(meshio::read_vtu, two, "two.vtu");
-  EXPECT_EQ(e, "two.vtu:4: 4-node and 10-node tetrahedra in one mesh (cell 1)");
-
-  const std::string inp =
-      "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n*ELEMENT,TYPE=C3D4\n1,1,2,3,4\n"
-      "*ELEMENT,TYPE=C3D10T\n2,1,2,3,4,1,2,3,4,5,5\n";
-  e = read_error(meshio::read_inp, inp, "mixed.inp");
-  EXPECT_EQ(e, "mixed.inp:9: C3D4 and C3D10 elements in one mesh");
-}
-
-TEST(MeshIoErrors, TruncatedInp) {
-  const std::string inp = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n*ELEMENT, TYPE=C3D10, ELSET=A\n1, 1, 2, 3, 4, 1,\n";
-  EXPECT_EQ(read_error(meshio::read_inp, inp, "cut.inp"), "cut.inp:7: element 1 has 5 nodes, expected 10 (truncated record?)");
-}
-
-TEST(MeshIoErrors, VtuAppendedAndTruncated) {
-  std::stringstream s;
-  meshio::write_vtu(grid_mesh(1, 1), s);
-  const std::string t = s.str();
-  std::string e = read_error(meshio::read_vtu, t.substr(0, t.size() / 2), "cut.vtu");
-  EXPECT_NE(e.find("truncated"), std::string::npos) << e;
-  std::string app = t;
-  app.replace(app.find("format=\"ascii\""), 14, "format=\"appended\" offset=\"0\"");
-  e = read_error(meshio::read_vtu, app, "app.vtu");
-  EXPECT_NE(e.find("app.vtu:6: appended data is not supported"), std::string::npos) << e;
-}
-
-TEST(MeshIoErrors, UnwritableMesh) {
-  TetMesh m = grid_mesh(1, 1);
-  m.tets[5] = 1000;
-  const std::string path = testing::TempDir() + "unwritable.msh";
-  std::remove(path.c_str());
-  const std::string e = error_of([&] { write_mesh(m, path); });
-  EXPECT_NE(e.find("tetrahedron 2 refers to node index 1000"), std::string::npos) << e;
-  EXPECT_FALSE(std::ifstream(path).good()) << "no file is left behind";
 }
 
 }  // namespace
