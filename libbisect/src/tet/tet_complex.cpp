@@ -41,6 +41,7 @@ double tet_angle_key(const std::vector<Vec3>& X, const Tet& t) {
 }
 
 void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threads) {
+  if (tets.size() > kMaxTets) throw MeshingError("tetrahedral complex: " + std::to_string(tets.size()) + " tetrahedra, more than it can number");
   tet = std::move(tets);
   tag = std::move(tags);
   tag.resize(tet.size(), 0);
@@ -317,6 +318,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
       cmask_[id] = 0;
       born_[id] = clock_ + 1;
     } else {
+      if (tet.size() >= kMaxTets) throw MeshingError("tetrahedral complex: more tetrahedra than it can number");
       id = static_cast<Index>(tet.size());
       tet.push_back(t);
       adj.push_back({-1, -1, -1, -1});

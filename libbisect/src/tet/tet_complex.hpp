@@ -52,6 +52,9 @@ class TetComplex {
   const std::vector<Vec3>& X;
   std::vector<Tet> tet;
   std::vector<Tet> adj;  // 4 u + g, or -1 (above)
+  // 4 u + g fits a 32-bit Index up to this many tetrahedra (the complex alone would hold some
+  // 30 GB then, which the memory bound refuses first; build and replace throw past it all the same).
+  static constexpr std::size_t kMaxTets = std::size_t{1} << 29;
   // The tetrahedron across face f of t (-1: none), and its face there (when there is one).
   Index neighbour(Index t, int f) const { return adj[t][f] < 0 ? -1 : adj[t][f] >> 2; }
   int neighbour_face(Index t, int f) const { return adj[t][f] & 3; }
