@@ -3,20 +3,12 @@
 #include <algorithm>
 
 #include "bisect/errors.hpp"
+#include "domain/face_split.hpp"
 #include "domain/poly2_overlaps.hpp"
 #include "geom/predicates.hpp"
 
 namespace bisect::mesh2d {
 namespace {
-
-double signed_area(const std::vector<Vec2>& nodes, const std::vector<Index>& loop) {
-  double a = 0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 &p = nodes[loop[i]], &q = nodes[loop[(i + 1) % loop.size()]];
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return 0.5 * a;
-}
 
 // The polygon with every other polygon's node that lies strictly inside one of its edges put into
 // that edge (exactly, by orient2d). A hole or sub-domain whose side runs along part of its
@@ -81,18 +73,19 @@ PlanarDomain prepare_planar(const Poly2Input& in) {
     while (ids.size() > 1 && ids.back() == ids.front()) ids.pop_back();
     polys.push_back(split_at_nodes(in.nodes, ids, by_x));
   }
+  const auto at = [&d](Index i) { return d.nodes[i]; };
   for (std::size_t p = 0; p < in.polygons.size(); ++p) {
     if (in.polygons[p].hole) continue;
     PlanarRegion r;
     r.polygon = static_cast<Index>(p);
     std::vector<Index> outer = polys[p];
-    if (signed_area(d.nodes, outer) < 0) std::reverse(outer.begin(), outer.end());
+    if (loop_area2(outer, at) < 0) std::reverse(outer.begin(), outer.end());
     r.loops.push_back(outer);
     r.loop_polygon.push_back(static_cast<Index>(p));
     for (std::size_t h = 0; h < in.polygons.size(); ++h) {
       if (sum.polygons[h].inside != static_cast<Index>(p)) continue;
       std::vector<Index> hole = polys[h];  // a hole, or a sub-domain's outline
-      if (signed_area(d.nodes, hole) > 0) std::reverse(hole.begin(), hole.end());
+      if (loop_area2(hole, at) > 0) std::reverse(hole.begin(), hole.end());
       r.loops.push_back(hole);
       r.loop_polygon.push_back(static_cast<Index>(h));
     }

@@ -9,21 +9,13 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
+#include "domain/face_split.hpp"
 #include "pipeline/piece_against_proxy.hpp"
 #include "surface/analytic_surfaces.hpp"
 #include "surface/region_mesher.hpp"
 
 namespace bisect::pipeline {
 namespace {
-
-double loop_area_uv(const std::vector<Vec2>& uv, const std::vector<Index>& loop) {
-  double a = 0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 &p = uv[loop[i]], &q = uv[loop[(i + 1) % loop.size()]];
-    a += p.x() * q.y() - p.y() * q.x();
-  }
-  return 0.5 * a;
-}
 
 // The parameters on the piece's face of node g reached through proxy face `proxy` (the chart of
 // that side of a seam): the surface's closest point to it, from the parameters interpolated in
@@ -274,7 +266,7 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
   // outer loops counter-clockwise in (u, v): when the 3D direction maps to clockwise, all loops
   // are reversed for the mesher and its triangles reversed back
   double total = 0;
-  for (const auto& l : rb.loops) total += loop_area_uv(rb.uv, l);
+  for (const auto& l : rb.loops) total += loop_area2(l, [&rb](Index i) { return rb.uv[i]; });
   const bool flipped = total < 0;
   if (flipped)
     for (auto& l : rb.loops) std::reverse(l.begin(), l.end());
