@@ -92,6 +92,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
   if (brep && opt.cells_only) throw InputError("--cells-only is for polyhedral inputs (.poly, .stl, .off); " + input + " is a B-rep");
   if (!opt.cells_only) {
     if (ends_with(opt.output, ".poly")) throw InputError(opt.output + ": a tetrahedral mesh is written as .vtu, .msh, .inp or .unv");
+    check_mesh_format(opt.output);  // any other extension no writer takes: now, not after the meshing
     GenerateOptions go;
     go.sizing.elements = opt.elements;
     go.sizing.size = opt.size;

@@ -29,5 +29,8 @@ TetMesh read_mesh(const std::string& path);
 // and a node set per boundary tag), .unv (I-DEAS universal, datasets 2411/2412, as FreeCAD's
 // Fem.read expects).
 void write_mesh(const TetMesh& mesh, const std::string& path);
+// The InputError write_mesh would throw for path's extension, before any meshing: a job whose
+// output cannot be written is refused before it runs, not after.
+void check_mesh_format(const std::string& path);
 
 }  // namespace bisect

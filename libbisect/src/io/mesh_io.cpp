@@ -169,17 +169,27 @@ TetMesh read_mesh(const std::string& path) {
   return reader(in, path);
 }
 
+namespace {
+
+using MeshWriter = void (*)(const TetMesh&, std::ostream&);
+
+MeshWriter mesh_writer(const std::string& path) {
+  const std::string ext = meshio::extension(path);
+  if (ext == ".vtu") return meshio::write_vtu;
+  if (ext == ".msh") return meshio::write_msh;
+  if (ext == ".inp") return meshio::write_inp;
+  if (ext == ".unv") return meshio::write_unv;
+  throw InputError(path + ": cannot write a tetrahedral mesh as '" + (ext.empty() ? std::string("(no extension)") : ext) +
+                   "'; supported: .vtu, .msh (Gmsh 4.1 ASCII), .inp (Abaqus/CalculiX), .unv (I-DEAS universal)");
+}
+
+}  // namespace
+
+void check_mesh_format(const std::string& path) { mesh_writer(path); }
+
 void write_mesh(const TetMesh& mesh, const std::string& path) {
   const std::string ext = meshio::extension(path);
-  using Writer = void (*)(const TetMesh&, std::ostream&);
-  Writer writer = nullptr;
-  if (ext == ".vtu") writer = meshio::write_vtu;
-  else if (ext == ".msh") writer = meshio::write_msh;
-  else if (ext == ".inp") writer = meshio::write_inp;
-  else if (ext == ".unv") writer = meshio::write_unv;
-  else
-    throw InputError(path + ": cannot write a tetrahedral mesh as '" + (ext.empty() ? std::string("(no extension)") : ext) +
-                     "'; supported: .vtu, .msh (Gmsh 4.1 ASCII), .inp (Abaqus/CalculiX), .unv (I-DEAS universal)");
+  const MeshWriter writer = mesh_writer(path);
   // Checked before the file is opened: a mesh that cannot be written leaves no empty file.
   meshio::check_writable(mesh, ext);
   io::write_output_file(path, [&](std::ostream& out) { writer(mesh, out); });

@@ -150,6 +150,16 @@ TEST(Cli, MainJobErrorsExitTwo) {
   r = run(in + " -o '" + (scratch_dir() / "out.poly").string() + "'");  // tetrahedra are not .poly
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find(".vtu, .msh, .inp or .unv"), std::string::npos) << r.err;
+  // any other extension no writer takes is refused before the job is even sized (it was refused
+  // only once the mesh was made, seconds or minutes later): the output's name, not the size
+  const fs::path vtk = scratch_dir() / "out.vtk";
+  fs::remove(vtk);
+  r = run(in + " -n 1e9 -o '" + vtk.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("out.vtk: cannot write a tetrahedral mesh as '.vtk'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--max-memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(vtk));
   r = run(in + " -o '" + (scratch_dir() / "out.vtu").string() + "' -s -1");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("-s needs a positive size"), std::string::npos) << r.err;
