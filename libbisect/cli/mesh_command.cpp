@@ -139,7 +139,10 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
   if (!ends_with(opt.output, ".poly"))
     throw InputError(opt.output + ": --cells-only writes the thesis .poly format; name the output *.poly");
   const PolyInput in = read_polyhedral(input);
-  const Decomposition d = decompose(in);
+  DecomposeOptions dopt;  // the mesher's cells: with -n, -s or the input's R, slender ones cut again
+  dopt.split_size = opt.size;
+  dopt.split_elements = static_cast<double>(opt.elements > 0 ? opt.elements : in.required_elements);
+  const Decomposition d = decompose(in, dopt);
   write_cells_poly(d, opt.output);
   if (!opt.stats.empty()) {
     io::write_output_file(opt.stats, [&](std::ostream& s) { s << decompose_stats_json(d.stats) << '\n'; });

@@ -19,6 +19,7 @@
 #include "bisect/edge_wedges.hpp"
 #include "bisect/errors.hpp"
 #include "bisect/plane_cut.hpp"
+#include "bisect/slender_split.hpp"
 #include "bisect/plane_selection.hpp"
 #include "geom/recentre.hpp"
 
@@ -305,6 +306,7 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
   }
 
   remove_face_holes(m, opt, st);
+  split_slender_cells(m, opt, st);
   for (std::size_t r = 0; r < m.regions.size(); ++r) {
     m.drop_dead_faces(static_cast<Index>(r));
     ConvexCell c;

@@ -172,6 +172,7 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
     out.proxy = pipeline::make_proxy(in, linear, angle);
     DecomposeOptions dopt = opt.decompose;
     if (progress) dopt.progress = progress;
+    dopt.split_size = opt.sizing.size, dopt.split_elements = static_cast<double>(opt.sizing.elements);
     // A proxy edge is reflex only when it turns in by more than a degree: a tessellation's fans
     // round a sphere's pole are convex on the true surface but lie flat to round-off, and cuts
     // through them (the thesis's tolerance is a thousandth of a degree) leave slivers at the pole.

@@ -81,6 +81,7 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   DecomposeOptions dopt = opt.decompose;
   dopt.curved_faces.clear();  // the B-rep route's, by its proxy's faces: a polyhedral input's facets are its surface
   if (progress) dopt.progress = [&](double x) { return progress(0.2 * x); };
+  dopt.split_size = opt.sizing.size, dopt.split_elements = static_cast<double>(want);
   const Decomposition d = decompose(in, dopt);
   st.init_geom = d.stats.prepare_seconds;
   st.bisect = d.stats.bisect_seconds;
