@@ -161,16 +161,10 @@ TEST(BrepThinWalls, AnElementBoundRefusesWhatTheWallsWouldMakeBeforeTheFill) {
 // A slender solid is cut into cells of at most 16:1 (bisect/slender_split.hpp): a 32 x 1 x 1 bar
 // at 2*10^5, one cell, kept tetrahedra of 0.05 degrees (0.85% under 10) from its star fill.
 TEST(BrepThinWalls, ASlenderBarIsCutIntoCellsTheStarFillsWell) {
-  const BrepInput in = test::input_through_string(BRepPrimAPI_MakeBox(32, 1, 1).Shape(), "bar");
-  GenerateOptions opt;
-  opt.sizing.elements = 200000;
-  GenerateStats st;
-  const TetMesh m = generate_brep_mesh(in, opt, &st);
-  EXPECT_TRUE(validate(m).empty());
-  EXPECT_EQ(st.convex_cells, 2);
-  const QualitySummary q = summarize_quality(element_quality(m));
-  EXPECT_GE(q.dihedral_min.min, 5.0);
-  EXPECT_LT(q.pct_dihedral_below_10, 0.005);
+  const Meshed m = mesh(test::input_through_string(BRepPrimAPI_MakeBox(32, 1, 1).Shape(), "bar"), 200000);
+  EXPECT_EQ(m.stats.convex_cells, 2);
+  EXPECT_GE(m.q.dihedral_min.min, 5.0);
+  EXPECT_LT(m.q.pct_dihedral_below_10, 0.005);
 }
 
 }  // namespace
