@@ -173,7 +173,8 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
         if progress is not None and progress(core_share + (1 - core_share) * fraction) is False:
             raise core().Cancelled("meshing cancelled")
 
-    mesh = femmesh_from_arrays(out, len(shape.Faces), int(out["stats"]["regions"]), build_progress)
+    mesh = femmesh_from_arrays(out, len(shape.Faces), int(out["stats"]["regions"]),
+                               None if progress is None else build_progress)
     t2 = time.time()
     if progress is not None and progress(1.0) is False:
         raise core().Cancelled("meshing cancelled")
@@ -220,7 +221,9 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
     (``femmesh_file``: lug at 10^5, 0.19 s against 0.33 s at order 1, 0.34 s against 0.72 s at
     order 2), one C++ call that holds the GIL throughout; nothing waits on the main thread but the
     caller. Off it (the mesh panel's worker), and wherever that reading fails, they are added one
-    call each, in slices.
+    call each, in slices. A caller that gives ``progress`` can Stop, and Stop must come within
+    0.5 s (issue 19): the read and the groups' one call each do not call back, so they are taken
+    only while they stay short (:data:`READ_WITHOUT_CALLS`); above, the sliced calls.
 
     Off the main thread the build lets the window's thread in after each slice. Measured in a
     FreeCAD window at 2e5 tetra10 (tests/freecad/gui_stall.py) the window froze 0.2-0.57 s while
@@ -242,13 +245,31 @@ def femmesh_from_arrays(out, faces, solids, progress=None):
         if progress is not None:
             progress(fraction)
 
+    read = not worker and (progress is None or _build_weight(out) <= READ_WITHOUT_CALLS)
     was_enabled = gc.isenabled()
     gc.disable()
     try:
-        return _femmesh_from_arrays(out, faces, solids, tick, read=not worker)
+        return _femmesh_from_arrays(out, faces, solids, tick, read=read)
     finally:
         if was_enabled:
             gc.enable()
+
+
+# The largest build (nodes and items weighed by _item_weights) read from a file when the caller
+# can Stop. The read and the groups' one call each went 1.25 us a weight without a call back
+# (filleted block at 2e5 tetrahedra, main thread: 0.19-0.48 s at order 1, 1.05 s at order 2;
+# the checker's CI, two jobs at once, once passed 0.5 s at order 1), against 0.05-0.09 s
+# between calls by slices; the slices cost the build 0.66-0.73 s against 0.42-0.74 s at order 1,
+# 1.76-2.15 s against 1.35-1.42 s at order 2. 1.2e5 is about 0.15 s of reading: 7e4 tetra4 or
+# 3e4 tetra10, where the two ways differ by hundredths of a second.
+READ_WITHOUT_CALLS = 1.2e5
+
+
+def _build_weight(out):
+    """The build's weight (nodes, tetrahedra, triangles by :func:`_item_weights`) of a core mesh dict."""
+    tets = np.asarray(out["tets"])
+    weights = _item_weights(tets.shape[1] == 10)
+    return len(out["nodes"]) * weights[0] + len(tets) * weights[1] + len(out["tris"]) * weights[2]
 
 
 def _item_weights(quadratic):
@@ -265,7 +286,7 @@ def _femmesh_from_arrays(out, faces, solids, tick, read):
     region, tri_tag = np.asarray(out["region"]), np.asarray(out["tri_tag"])
     quadratic = tets.shape[1] == 10
     weights = _item_weights(quadratic)
-    done = len(nodes) * weights[0] + len(tets) * weights[1] + len(tris) * weights[2]  # the items' share, once in
+    done = _build_weight(out)  # the items' share, once in
     total = max(1.0, done + faces + solids)
     # a progress call every 5,000 items: about 50 ms of FreeCAD's adding of tetra10 (Stop within
     # 0.5 s). The arrays become Python lists a slice at a time: one tolist() of 10^6 tetra10 holds
