@@ -120,9 +120,12 @@ struct DecomposeOptions {
   std::vector<char> curved_faces;
   // The mesh to be made: split_size, its spacing s (> 0), else split_elements, its count R. The
   // convex cells that are long and thin and hold many of its elements (R V_cell / V, or
-  // 8 V_cell / s^3) are cut again across their length (bisect/slender_split.hpp); both 0: never.
+  // 8 V_cell / s^3) are cut again across their length (bisect/slender_split.hpp), and so are the
+  // cells that hold more than a sixth of them (bisect/balance_split.hpp, unless balance_cells
+  // is false: the threads' share of the filling); both 0: never.
   double split_size = 0;
   double split_elements = 0;
+  bool balance_cells = true;
   std::function<bool(double)> progress;  // fraction done; return false to cancel
 
   // Whether the wider margin is tried at all, and these options with it off (the thesis's margin

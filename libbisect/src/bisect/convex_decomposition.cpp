@@ -15,6 +15,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "bisect/balance_split.hpp"
 #include "bisect/edge_following.hpp"
 #include "bisect/edge_wedges.hpp"
 #include "bisect/errors.hpp"
@@ -307,6 +308,7 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
 
   remove_face_holes(m, opt, st);
   split_slender_cells(m, opt, st);
+  split_large_cells(m, opt, st);
   for (std::size_t r = 0; r < m.regions.size(); ++r) {
     m.drop_dead_faces(static_cast<Index>(r));
     ConvexCell c;
