@@ -1,6 +1,8 @@
 #include "bisect/cell_halving.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <deque>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -68,6 +70,28 @@ bool halve_cell(PolyhedralModel& m, Index r, const CellExtents& e, const Decompo
     return true;
   }
   return false;
+}
+
+void halve_cells_while(PolyhedralModel& m, const DecomposeOptions& opt, DecomposeStats& st, const char* key,
+                       double min_elements, double min_thickness, const std::function<bool(const CellExtents&)>& also) {
+  const double density = nominal_density(m, opt);
+  if (!(density > 0)) return;
+  const double spacing = std::cbrt(8 / density);  // the nominal spacing: 8 V / s^3 elements
+  std::deque<Index> work;
+  for (std::size_t r = 0; r < m.regions.size(); ++r)
+    if (m.regions[r].alive) work.push_back(static_cast<Index>(r));
+  std::vector<Index> halves;
+  while (!work.empty()) {
+    const Index r = work.front();
+    work.pop_front();
+    if (!m.regions[r].alive || !(m.region_volume(r) * density >= min_elements)) continue;
+    const CellExtents e = principal_extents(m, r);
+    if (e.shortest() < min_thickness * spacing || !also(e)) continue;
+    halves.clear();
+    if (!halve_cell(m, r, e, opt, halves)) continue;
+    ++st.bisections[key];
+    work.insert(work.end(), halves.begin(), halves.end());
+  }
 }
 
 }  // namespace bisect

@@ -3,6 +3,7 @@
 // threads' share). The thesis's own tool, one more bisection, with a plane normal to the cell's
 // longest principal axis through the middle of its extent there.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "bisect/polyhedral_model.hpp"
@@ -30,5 +31,13 @@ double nominal_density(const PolyhedralModel& m, const DecomposeOptions& opt, do
 // where the cut is rejected there (near a vertex). Appends the new regions to `halves` and
 // returns true when a cut was made.
 bool halve_cell(PolyhedralModel& m, Index r, const CellExtents& e, const DecomposeOptions& opt, std::vector<Index>& halves);
+
+// Halves every live cell while it holds at least min_elements by volume (at opt's nominal
+// density), is at least min_thickness nominal spacings thick along its shortest principal axis,
+// and `also` accepts its extents; a cell's halves are asked again. Counts each cut in
+// st.bisections[key]. The loop of both rules after the convex decomposition: slender_split
+// (also: long for its thickness) and balance_split (a share of the job).
+void halve_cells_while(PolyhedralModel& m, const DecomposeOptions& opt, DecomposeStats& st, const char* key,
+                       double min_elements, double min_thickness, const std::function<bool(const CellExtents&)>& also);
 
 }  // namespace bisect
