@@ -58,6 +58,7 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   cmask_.assign(tet.size(), 0);
   born_.assign(tet.size(), ++clock_);
   failed_.clear();
+  flip_failed_.clear();
   free_.clear();
   // Faces matched through their smallest node: a counting sort of the faces by it, then each
   // node's few dozen faces sorted by their other two nodes and their id (4 t + f), so that
@@ -202,6 +203,7 @@ void TetComplex::refresh_quality() {
   for (std::size_t t = 0; t < tet.size(); ++t)
     if (alive[t]) q[t] = tet_angle_key(X, tet[t]);
   failed_.clear();
+  flip_failed_.clear();
 }
 
 void TetComplex::moved(const std::vector<Index>& tets) {

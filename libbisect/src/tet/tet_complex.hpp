@@ -207,6 +207,11 @@ class TetComplex {
     std::array<Index, kMaxRing> ring;
   };
   EdgeTable<Failure> failed_;  // edge (low node << 32 | high) -> failure
+  // The 2-3 transformation remembers its failures the same way, per face (4 t + f, both sides):
+  // the clock when it failed there, 0 for never. Its outcome depends on the two tetrahedra
+  // alone, so while neither is born after that it fails again: a later pass's list and the
+  // second side of a face hold many such. 32 bits a face: a clock past them records nothing.
+  std::vector<std::uint32_t> flip_failed_;
   // per-tetrahedron marks for set membership in replace and insert_delaunay (a stamp per use,
   // so nothing is cleared): cavities of thousands of tetrahedra made linear searches quadratic
   mutable std::vector<unsigned> mark_;

@@ -82,12 +82,22 @@ bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
 }
 
 bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& queue) {
-  std::vector<Tet>& fresh = fresh_;
-  if (!flip23_tets(t, f, &fresh)) return false;
   const Index n = neighbour(t, f);
+  if (n < 0) return false;
+  flip_failed_.resize(4 * tet.size(), 0);
+  const std::size_t here = 4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(f);
+  if (const std::uint64_t was = flip_failed_[here]; was != 0 && born_[t] <= was && born_[n] <= was) return false;
+  const auto fail = [&] {
+    if (clock_ < std::numeric_limits<std::uint32_t>::max())
+      flip_failed_[here] = flip_failed_[4 * static_cast<std::size_t>(n) + static_cast<std::size_t>(neighbour_face(t, f))] =
+          static_cast<std::uint32_t>(clock_);
+    return false;
+  };
+  std::vector<Tet>& fresh = fresh_;
+  if (!flip23_tets(t, f, &fresh)) return is_constrained(t, f) ? false : fail();
   const double need = std::min(q[t], q[n]) * (1 + 1e-9);
   for (const Tet& m : fresh)
-    if (!(tet_angle_key(X, m) > need)) return false;  // the smallest solid angle would not rise
+    if (!(tet_angle_key(X, m) > need)) return fail();  // the smallest solid angle would not rise
   old_.assign({t, n});
   for (Index id : replace(old_, fresh))
     for (int g = 0; g < 4; ++g) queue.push_back({id, g});
