@@ -127,7 +127,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
       mesh = generate_mesh(in, go, &st);
     }
     write_mesh(mesh, opt.output);
-    const QualitySummary q = summarize_quality(element_quality(mesh));
+    const QualitySummary q = summarize_quality(element_quality(mesh, {}, opt.threads));
     if (!opt.stats.empty()) {
       io::write_output_file(opt.stats, [&](std::ostream& s) { s << generate_stats_json(st, q) << '\n'; });
     }

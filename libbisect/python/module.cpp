@@ -271,7 +271,7 @@ PYBIND11_MODULE(_core, m) {
           mesh = generate_mesh(in, opt, &st);
           util::ProgressPoll poll(opt.progress);
           poll.at(1.0);
-          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); })));
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); }, opt.threads)));
         });
         py::dict d = mesh_to_dict(mesh);
         d["stats"] = json_loads(stats);
@@ -307,7 +307,7 @@ PYBIND11_MODULE(_core, m) {
           mesh = generate_brep_mesh(in, opt, &st);
           util::ProgressPoll poll(opt.progress);  // Stop within the summary too (0.4 s at 10^6)
           poll.at(1.0);
-          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); })));
+          stats = generate_stats_json(st, summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); }, opt.threads)));
           if (!path.empty()) write_mesh(mesh, path);
         });
         py::dict d = arrays ? mesh_to_dict(mesh) : py::dict();
@@ -368,7 +368,7 @@ PYBIND11_MODULE(_core, m) {
         ProgressBridge bridge(progress);
         const std::function<bool(double)> callback = bridge.callback();
         util::ProgressPoll poll(callback);
-        bridge.run([&] { json = quality_json(summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); }))); });
+        bridge.run([&] { json = quality_json(summarize_quality(element_quality(mesh, [&poll] { return poll.cancelled(); }, 0))); });
         return json_loads(json);
       },
       py::arg("nodes"), py::arg("tets"), py::arg("progress") = py::none(),

@@ -52,8 +52,9 @@ double triangle_min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
 double surface_min_angle_deg(const TetMesh& mesh);
 
 // Per tetrahedron of the mesh (corner nodes only; mid-edge nodes do not enter the measures).
-// cancelled (optional) is asked every 4096 tetrahedra; true stops with Cancelled.
-std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled = {});
+// cancelled (optional) is asked every 4096 tetrahedra, on the calling thread; true stops with
+// Cancelled. threads: as GenerateOptions::threads (0: one per core); the result is the same.
+std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled = {}, int threads = 1);
 
 struct MeasureStats {
   double min = 0, mean = 0, max = 0;

@@ -11,6 +11,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "util/ordered_parallel.hpp"
 
 namespace bisect {
 
@@ -144,21 +145,30 @@ double alpha_from_edges(const Vec3& u, const Vec3& v, const Vec3& w, double area
   return area > 0 && nlen > 0 ? det * det / (area * nlen) : 0;
 }
 
-std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled) {
+std::vector<TetQuality> element_quality(const TetMesh& mesh, const std::function<bool()>& cancelled, int threads) {
   const std::size_t nt = mesh.num_tets();
   const std::size_t nn = mesh.nodes.size();
   std::vector<TetQuality> out(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    if ((t & 4095) == 4095 && cancelled && cancelled()) throw Cancelled();  // 1 s and more at 10^6
-    Index v[4];
-    bool ok = true;
-    for (int i = 0; i < 4; ++i) {
-      v[i] = mesh.tet_node(t, i);
-      ok = ok && v[i] >= 0 && std::size_t(v[i]) < nn;
-    }
-    // A tetrahedron naming a missing node grades as degenerate; the validator names it.
-    if (ok) out[t] = tet_quality(mesh.nodes[v[0]], mesh.nodes[v[1]], mesh.nodes[v[2]], mesh.nodes[v[3]]);
-  }
+  // in chunks of 4096 on the threads (about half a second at 10^6 on one), asked between chunks
+  // whether to stop
+  constexpr std::size_t kChunk = 4096;
+  util::ordered_parallel(
+      (nt + kChunk - 1) / kChunk, util::thread_count(threads),
+      [&](std::size_t c) {
+        for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+          Index v[4];
+          bool ok = true;
+          for (int i = 0; i < 4; ++i) {
+            v[i] = mesh.tet_node(t, i);
+            ok = ok && v[i] >= 0 && std::size_t(v[i]) < nn;
+          }
+          // A tetrahedron naming a missing node grades as degenerate; the validator names it.
+          if (ok) out[t] = tet_quality(mesh.nodes[v[0]], mesh.nodes[v[1]], mesh.nodes[v[2]], mesh.nodes[v[3]]);
+        }
+      },
+      [&](std::size_t) {
+        if (cancelled && cancelled()) throw Cancelled();
+      });
   return out;
 }
 

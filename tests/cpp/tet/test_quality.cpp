@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
 #include "tet/tet_test_meshes.hpp"
 
@@ -409,6 +410,30 @@ TEST(Quality, SummaryOfStructuredMesh) {
   EXPECT_NEAR(s.dihedral_max.max, 90, 1e-9);
   EXPECT_NEAR(s.gamma.min, s.gamma.max, 1e-12);
   EXPECT_EQ(s.pct_dihedral_below_10, 0);
+}
+
+TEST(Quality, ElementQualityIsTheSameOnEveryThreadCount) {
+  // 6 * 12^3 = 10,368 tetrahedra: three chunks of the threads' work, the last one short; the
+  // nodes jittered so that the tetrahedra differ
+  TetMesh m = test::cube_mesh(12);
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) m.nodes[i] += 0.02 * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), std::sin(7.0 * i));
+  const auto one = element_quality(m, {}, 1);
+  ASSERT_EQ(one.size(), m.num_tets());
+  for (int threads : {2, 3, 0}) {
+    const auto many = element_quality(m, {}, threads);
+    ASSERT_EQ(many.size(), one.size());
+    for (std::size_t t = 0; t < one.size(); ++t) {
+      EXPECT_EQ(many[t].dihedral_min, one[t].dihedral_min) << "tetrahedron " << t << ", " << threads << " threads";
+      EXPECT_EQ(many[t].alpha, one[t].alpha) << "tetrahedron " << t << ", " << threads << " threads";
+    }
+  }
+  EXPECT_GT(one.back().alpha, 0);  // the last chunk's tetrahedra are graded too
+  // Stop is asked between chunks, on this thread, whatever the count
+  for (int threads : {1, 2}) {
+    int asked = 0;
+    EXPECT_THROW(element_quality(m, [&] { return ++asked == 2; }, threads), Cancelled);
+    EXPECT_EQ(asked, 2);
+  }
 }
 
 bool has_key(const std::string& json, const std::string& key) { return json.find("\"" + key + "\":") != std::string::npos; }
