@@ -268,6 +268,27 @@ TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
   EXPECT_EQ(held.live_count(), 2u);
 }
 
+TEST(TetComplex, AFailedFlipIsTriedAgainOnceATetrahedronChanges) {
+  // two tetrahedra on a unit triangle, apexes 0.8 above and below its centre: the 2-3 flip would
+  // lower the smallest solid angle (0.545 to 0.190 sr), so it fails and is remembered; with the
+  // lower apex moved to 0.1 below (0.092 before, 0.190 after) it is tried again and taken. A
+  // memory not undone by the move would miss it.
+  const Vec3 g(0.5, 0.2886751, 0);
+  std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.8660254, 0}, g + Vec3(0, 0, 0.8), g - Vec3(0, 0, 0.8)};
+  std::vector<Tet> t = {{0, 1, 2, 3}, {0, 1, 2, 4}};
+  for (Tet& x : t)
+    if (!positive(X, x)) std::swap(x[0], x[1]);
+  TetComplex cx(X);
+  cx.build(t);
+  EXPECT_EQ(cx.improve_all(10), 0);
+  EXPECT_EQ(cx.improve_all(10), 0);  // remembered: the same answer
+  X[4] = g - Vec3(0, 0, 0.1);
+  cx.moved({0, 1});
+  EXPECT_EQ(cx.improve_all(10), 1);
+  EXPECT_EQ(cx.live_count(), 3u);
+  expect_consistent(cx);
+}
+
 // Removing a node by flips (the helper of 7.6): the cube's six tetrahedra with a node at the
 // centre inserted (twelve around it, star of the centre), and a tetrahedron split 1-4; the
 // node goes, the boundary and the volume stay, every tetrahedron is positive.
