@@ -92,14 +92,15 @@ bool TetComplex::ring_triangulation(Index a, Index b, const Index* p, std::size_
   std::array<double, kMaxRing * kMaxRing> best;
   std::array<int, kMaxRing * kMaxRing> split;
   // The sign along the edge's direction is the triangles' orientation in the projection along
-  // (a, b), so a ring that winds one way round the edge (every consecutive pair with a and b the
-  // same orientation) is triangulated with the other sign alone: the triangles' signed areas add
-  // up to the polygon's, which that winding makes of that sign. The other sign's search, which
-  // fails, was half the dynamic programme's cost; only a ring that winds both ways (a fold) is
-  // searched with both.
+  // (a, b), so a polygon that winds once round the edge (every pair of consecutive corners, the
+  // last and the first too, with a and b the same orientation) is triangulated with the other
+  // sign alone: the triangles' signed areas add up to the polygon's, which that winding makes of
+  // that sign. The other sign's search, which fails, was half the dynamic programme's cost. A
+  // ring that winds both ways (a fold), or an open one whose closing chord turns back (the
+  // surface's edge flips), is searched with both.
   const int w = orient3d(X[a], X[b], X[p[0]], X[p[1]]);
   bool one_way = w != 0;
-  for (std::size_t i = 1; i + 1 < k && one_way; ++i) one_way = orient3d(X[a], X[b], X[p[i]], X[p[i + 1]]) == w;
+  for (std::size_t i = 1; i < k && one_way; ++i) one_way = orient3d(X[a], X[b], X[p[i]], X[p[(i + 1) % k]]) == w;
   for (int sign : {1, -1}) {
     if (one_way && sign != -w) continue;
     best.fill(-1);  // best[i * k + j]: polygon i..j, -1 impossible
