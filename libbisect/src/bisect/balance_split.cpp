@@ -12,8 +12,9 @@ void split_large_cells(PolyhedralModel& m, const DecomposeOptions& opt, Decompos
   double volume = 0;
   const double density = nominal_density(m, opt, &volume);
   if (!(density > 0)) return;
-  // A cell is halved while it holds more than the share; the limit itself is never met exactly
-  // (the share is no power of two's fraction), so ">=" in the loop is ">" here.
+  // The loop halves a cell holding at least the limit: at least kBalanceMinElements, as the
+  // header says, and "more than the share" where the share is the larger, since the share is
+  // no power of two's fraction and no cell's volume meets it exactly.
   const double limit = std::max(kBalanceMinElements, kBalanceShare * volume * density);
   halve_cells_while(m, opt, st, "balance_split", limit, kSlenderMinThickness, [](const CellExtents&) { return true; });
 }
