@@ -140,6 +140,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
     total.gen_tets += st.gen_tets, total.optimize += st.optimize;
     if (st.count_floor > 0 && total.count_floor_reason.empty()) total.count_floor_reason = st.count_floor_reason;
     total.proxy_attempts = std::max(total.proxy_attempts, st.proxy_attempts);  // the most any body needed
+    total.placements += st.placements;
     if (total.proxy_retry_reason.empty()) total.proxy_retry_reason = st.proxy_retry_reason;
     total.face_corner_retry = total.face_corner_retry || st.face_corner_retry;
   }

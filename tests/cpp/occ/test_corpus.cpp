@@ -140,6 +140,11 @@ TEST(CorpusRing, AShapeTheFirstProxyCannotMeshSaysWhy) {
   EXPECT_NE(json.find("\"proxy_attempts\": 2"), std::string::npos) << json;
   EXPECT_TRUE(st.face_corner_retry);
   EXPECT_NE(json.find("\"face_corner_retry\": true"), std::string::npos) << json;
+  // the second proxy's count search starts at the spacing the first one's found: 9 node
+  // placements in all (10 when it started again from the nominal spacing)
+  EXPECT_GE(st.placements, 2);
+  EXPECT_LE(st.placements, 9);
+  EXPECT_NE(json.find("\"placements\": " + std::to_string(st.placements)), std::string::npos) << json;
 }
 
 // A shape its first proxy meshes: one attempt, no reason.
