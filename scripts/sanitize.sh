@@ -12,7 +12,9 @@
 # shared models and OpenCASCADE shapes, the 100k/1M-element scale runs, the generated solids,
 # x_ring's proxy test and seven corpus shapes of 40 to 300 s each under ASan), which would take
 # many minutes more on a 2-core machine; they run in the ordinary build. CI's whole run was 33
-# minutes with them and the random solids' full counts (this job 962 s of it).
+# minutes with them and the random solids' full counts (this job 962 s of it). Tests that repeat
+# one code path many times run fewer repetitions here (tests/cpp/sanitizer.hpp: the predicates'
+# cross-checks a fifth of their cases, the planar mesher not its 10^5 size).
 # Environment: SANITIZE_EXCLUDE (replace the regex), SANITIZE_JOBS (ctest -j, default 2).
 set -uo pipefail
 

@@ -12,6 +12,7 @@
 #include "bisect/generate.hpp"
 #include "bisect/occ.hpp"
 #include "occ_checks.hpp"
+#include "sanitizer.hpp"
 
 namespace bisect {
 namespace {
@@ -46,17 +47,7 @@ TEST(BrepBoundedWork, TheBoundCountsTheLayerUnderAFinelyBoundedCurvedFace) {
 }
 
 // How much slower than the release build this one runs: timing bounds scale by it.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kSlowdown = 4;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double kSlowdown = 4;
-#else
-constexpr double kSlowdown = 1;
-#endif
-#else
-constexpr double kSlowdown = 1;
-#endif
+constexpr double kSlowdown = test::kSanitizerSlowdown;
 
 // Asks to stop `stop_at` seconds (release build) into a fine cylinder's meshing: a chord
 // deviation of 3e-4 asks for 614k tetrahedra. Returns when the callback first saw the time past
