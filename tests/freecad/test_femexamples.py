@@ -81,7 +81,7 @@ EXAMPLES = {
     "constraint_contact_solid_solid": "box and half cylinder in contact (penalty contact); tetra10",
     "constraint_section_print": "two solids (BooleanFragments), pressure, section print; tetra10",
     "constraint_selfweight_cantilever": "cantilever under self weight; tetra10",
-    "constraint_tie": "two solids tied, edge-fixed, edge load; tetra10",
+    "constraint_tie": "a 359-degree conical shell, the faces of its gap tied, edge-fixed, edge load; tetra10",
     "constraint_transform_beam_hinged": "hinged beam, transformed displacement constraints; tetra10",
     "constraint_transform_torque": "tube, torque through a cylindrical transform; tetra10",
     "material_multiple_bendingbeam_fiveboxes": "five boxes (CompSolid), three materials; tetra10",
