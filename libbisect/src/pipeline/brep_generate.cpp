@@ -106,6 +106,15 @@ double boundary_layer_count(const BrepInput& in, const BrepTessellation& tess, c
   return count;
 }
 
+// The area of the proxy's faces (its tessellation's triangles): count_calibration.hpp's
+// expected_spacing takes it for the boundary's share of the nodes.
+double tessellation_area(const BrepTessellation& tess) {
+  double area = 0;
+  for (const BrepTessellation::Face& f : tess.faces)
+    for (const auto& t : f.tris) area += 0.5 * (tess.nodes[t[1]] - tess.nodes[t[0]]).cross(tess.nodes[t[2]] - tess.nodes[t[0]]).norm();
+  return area;
+}
+
 double field_count(const BrepInput& in, const Decomposition& d, const size::SizeField& h, const BrepTessellation& tess) {
   std::vector<nodes::Polytope> cells;
   double total_volume = 0;
@@ -411,9 +420,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   bool use_walls = true, walls_found = false;
   // What the last attempt's count search found (its spacing, and its filling's ratio of the count
   // to the prediction): a proxy made again finer has nearly the same nodes at a spacing, so the
-  // next attempt's search starts there instead of at the nominal spacing (flange.brep at 10^6,
-  // whose first proxy fails in the cell fill: 3 node placements instead of 4, 15.1 s instead of
-  // 16.6, median of three)
+  // next attempt's search starts there instead of where the first began (corpus/x_ring.brep at
+  // 2*10^4, whose first proxy fails in the cell fill: 9 node placements instead of 10)
   double carried_np = 0, carried_scale = 1;
   // when every attempt fails, the first one's message: on the proxy the user's shape is tessellated
   // to, it names the B-rep faces where to look (a finer proxy can fail otherwise, in its own
@@ -440,7 +448,13 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     // (pipeline/count_calibration.hpp's rule: 6.2 tetrahedra per node inside, 2.65 per node on the
     // boundary), the cells are filled, and when the count still misses R by more than 10% the
     // filling's own ratio corrects the prediction and the search runs again (at most two fillings).
-    double scale = carried_scale, np = opt.sizing.size > 0 ? opt.sizing.size : carried_np > 0 ? carried_np : nominal_spacing(volume, want);
+    // The first proxy's search starts at the spacing the volume and the faces' area predict
+    // (count_calibration.hpp's expected_spacing: most searches at 10^5 and 10^6 then place their
+    // nodes once), a later one's where the one before ended.
+    double scale = carried_scale;
+    double np = opt.sizing.size > 0 ? opt.sizing.size
+                : carried_np > 0    ? carried_np
+                                    : pipeline::expected_spacing(volume, tessellation_area(dc.proxy.tess), want);
     // the walls' thickness, once per decomposition: up to four times the first spacing, room for
     // the count search's coarser rounds (kWallSizeFactor: elements no larger than a wall is thick)
     const std::vector<size::WallSample> walls =
@@ -452,6 +466,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       pipeline::BrepPlacement placed;
       double placed_miss = 1e300, placed_np = np, last_predicted = 0, last_np = 0;
       bool at_floor = false;  // a coarser base no longer lowered the count
+      // the spacings that bracket R: the coarsest seen above it and the finest seen below it
+      double over_np = 0, over_predicted = 0, under_np = 0, under_predicted = 0;
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
         // the search's rounds share the placement's part of the bar (most end within three)
@@ -481,7 +497,20 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
           break;
         }
         last_predicted = predicted, last_np = np;
-        const double next = std::min(np * std::cbrt(predicted / want), diag);
+        if (predicted > want && (over_np == 0 || np > over_np)) over_np = np, over_predicted = predicted;
+        if (predicted < want && (under_np == 0 || np < under_np)) under_np = np, under_predicted = predicted;
+        double next = std::min(np * std::cbrt(predicted / want), diag);
+        if (over_np > 0 && under_np > over_np) {
+          // R bracketed: the count jumps between the two (a box's lattices of nodes: cantilever.brep
+          // at 10^5 predicted 91.5k at one spacing and 108.5k 3% finer), so the next lies between
+          // them, where the count's local power law (log-log between the two) puts R, at least a
+          // fifth of the bracket from either end; a bracket under 2% wide holds no better spacing
+          if (under_np / over_np < 1.02) break;
+          const double power = std::log(over_predicted / under_predicted) / std::log(under_np / over_np);
+          const double width = std::log(under_np / over_np);
+          next = std::clamp(over_np * std::pow(over_predicted / want, 1 / power), over_np * std::exp(0.2 * width),
+                            over_np * std::exp(0.8 * width));
+        }
         if (std::abs(next / np - 1) < 0.01) break;
         np = next;
       }

@@ -1,5 +1,6 @@
 #include "pipeline/count_calibration.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -72,6 +73,22 @@ std::string walls_why(double thickness) {
   char text[96];
   std::snprintf(text, sizeof text, "walls down to %.3g thick get elements no larger than %.3g", thickness, size::kWallSizeFactor * thickness);
   return text;
+}
+
+double expected_spacing(double volume, double area, double elements) {
+  constexpr double k3 = 6.0, k2 = 1.7;
+  if (!(volume > 0) || !(elements > 0)) return 0;
+  const double a = std::max(area, 0.0);
+  // Newton's method on f(x) = k3 V x^3 + k2 A x^2 - R for x = 1 / h, increasing and convex for
+  // x > 0: from the volume term's root (f >= 0 there) it falls monotonically onto the root
+  double x = std::cbrt(elements / (k3 * volume));
+  for (int i = 0; i < 50; ++i) {
+    const double f = (k3 * volume * x + k2 * a) * x * x - elements, df = (3 * k3 * volume * x + 2 * k2 * a) * x;
+    const double step = f / df;
+    x -= step;
+    if (!(std::abs(step) > 1e-12 * x)) break;
+  }
+  return 1 / x;
 }
 
 void check_element_bound(double predicted, const GenerateOptions& opt, const std::string& source, const std::string& why, const char* by) {
