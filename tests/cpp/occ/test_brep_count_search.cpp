@@ -17,6 +17,17 @@
 namespace bisect {
 namespace {
 
+// The shape meshed at R = 10^5, checked valid and within 10% of R; its statistics.
+GenerateStats mesh_at_100k(const TopoDS_Shape& shape, const char* name) {
+  GenerateOptions opt;
+  opt.sizing.elements = 100000;
+  GenerateStats st;
+  const TetMesh m = generate_brep_mesh(test::input_through_string(shape, name), opt, &st);
+  EXPECT_TRUE(validate(m).empty()) << name;
+  EXPECT_NEAR(static_cast<double>(m.num_tets()), 1e5, 1e4) << name;
+  return st;
+}
+
 TEST(CountSearch, TheExpectedSpacingSolvesItsEquation) {
   for (double V : {1.0, 64.0, 5e5})
     for (double A : {0.0, 6.0, 4e4})
@@ -36,29 +47,16 @@ TEST(CountSearch, TheExpectedSpacingSolvesItsEquation) {
 // A box with a hole: the start predicts R within 5%, so the nodes are placed once (twice when the
 // search started at the nominal spacing, which predicted 20% too few tetrahedra).
 TEST(CountSearch, ABoxWithAHolePlacesItsNodesOnce) {
-  const BrepInput in = test::input_through_string(test::make_box_minus_cylinder(), "box-hole");
-  GenerateOptions opt;
-  opt.sizing.elements = 100000;
-  GenerateStats st;
-  const TetMesh m = generate_brep_mesh(in, opt, &st);
-  EXPECT_TRUE(validate(m).empty());
+  const GenerateStats st = mesh_at_100k(test::make_box_minus_cylinder(), "box-hole");
   EXPECT_EQ(st.placements, 1);
   EXPECT_EQ(st.proxy_attempts, 1);
-  EXPECT_NEAR(static_cast<double>(m.num_tets()), 1e5, 1e4);
 }
 
 // A 100 x 10 x 10 bar at 10^5: its count jumps between two spacings 3% apart (91.5k and 108.5k
 // predicted), and cube-root steps from either side jumped back and forth (five placements). Once
 // two spacings bracket R the next lies between them: three placements.
 TEST(CountSearch, ABarWhoseCountJumpsIsBracketed) {
-  const BrepInput in = test::input_through_string(BRepPrimAPI_MakeBox(100, 10, 10).Shape(), "bar");
-  GenerateOptions opt;
-  opt.sizing.elements = 100000;
-  GenerateStats st;
-  const TetMesh m = generate_brep_mesh(in, opt, &st);
-  EXPECT_TRUE(validate(m).empty());
-  EXPECT_LE(st.placements, 3);
-  EXPECT_NEAR(static_cast<double>(m.num_tets()), 1e5, 1e4);
+  EXPECT_LE(mesh_at_100k(BRepPrimAPI_MakeBox(100, 10, 10).Shape(), "bar").placements, 3);
 }
 
 }  // namespace
