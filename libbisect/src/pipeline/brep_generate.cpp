@@ -56,6 +56,16 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // at its walls' spacing took 5 s before the bound could refuse it.
 constexpr double kFieldSamples = 2e4;
 
+// The area of the proxy's faces (its tessellation's triangles): count_calibration.hpp's
+// expected_spacing takes it for the boundary's share of the nodes, boundary_layer_count for
+// its samples.
+double tessellation_area(const BrepTessellation& tess) {
+  double area = 0;
+  for (const BrepTessellation::Face& f : tess.faces)
+    for (const auto& t : f.tris) area += 0.5 * (tess.nodes[t[1]] - tess.nodes[t[0]]).cross(tess.nodes[t[2]] - tess.nodes[t[0]]).norm();
+  return area;
+}
+
 // The tetrahedra of the graded layer under the surface that the volume grid (points `unit`
 // apart) misses: where the surface asks for h0 much finer than the grid (a chord deviation of
 // 3e-5 on a 5 mm cylinder: h0 = 0.035, grid points 0.4 apart), the size grows as h0 + g t with
@@ -64,10 +74,7 @@ constexpr double kFieldSamples = 2e4;
 // the count 8 / h^3 integrated over the depth of one grid step, less what the grid counts there
 // (the size at half that depth): nought where h0 is the grid's own scale.
 double boundary_layer_count(const BrepInput& in, const BrepTessellation& tess, const size::SizeField& h, double unit) {
-  const double g = h.grading(), base = h.base();
-  double area = 0;
-  for (const BrepTessellation::Face& f : tess.faces)
-    for (const auto& t : f.tris) area += 0.5 * (tess.nodes[t[1]] - tess.nodes[t[0]]).cross(tess.nodes[t[2]] - tess.nodes[t[0]]).norm();
+  const double g = h.grading(), base = h.base(), area = tessellation_area(tess);
   if (!(area > 0) || !(unit > 0) || !(g > 0)) return 0;
   const double step = std::sqrt(area / kFieldSamples);  // about as many samples as the volume grid
   auto per_area = [&](double h0) {
@@ -104,15 +111,6 @@ double boundary_layer_count(const BrepInput& in, const BrepTessellation& tess, c
     }
   }
   return count;
-}
-
-// The area of the proxy's faces (its tessellation's triangles): count_calibration.hpp's
-// expected_spacing takes it for the boundary's share of the nodes.
-double tessellation_area(const BrepTessellation& tess) {
-  double area = 0;
-  for (const BrepTessellation::Face& f : tess.faces)
-    for (const auto& t : f.tris) area += 0.5 * (tess.nodes[t[1]] - tess.nodes[t[0]]).cross(tess.nodes[t[2]] - tess.nodes[t[0]]).norm();
-  return area;
 }
 
 double field_count(const BrepInput& in, const Decomposition& d, const size::SizeField& h, const BrepTessellation& tess) {
