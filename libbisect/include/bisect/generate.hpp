@@ -137,8 +137,9 @@ struct GenerateStats {
   // (its message, naming the place): why a run took two or three times its usual time
   std::int64_t proxy_attempts = 0;
   std::string proxy_retry_reason;
-  // B-rep route: the node placements the count search ran, over every proxy tried (a later proxy's
-  // search starts at the spacing the one before found)
+  // The node placements the count search ran. B-rep route: over every proxy tried (a later
+  // proxy's search starts at the spacing the one before found), the filling using the search's.
+  // Polyhedral route: the search's placements of the nodes alone, and one per filling.
   std::int64_t placements = 0;
   // B-rep route: the decomposition that meshed was made again without its face corner limit (no
   // cut leaving a corner under 25 degrees in a flat face), whose cuts had ended in a region no

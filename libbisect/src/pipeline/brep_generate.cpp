@@ -452,7 +452,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     double scale = carried_scale;
     double np = opt.sizing.size > 0 ? opt.sizing.size
                 : carried_np > 0    ? carried_np
-                                    : pipeline::expected_spacing(volume, tessellation_area(dc.proxy.tess), want);
+                                    : pipeline::expected_spacing(volume, tessellation_area(dc.proxy.tess), want, pipeline::kBrepNodes);
     // the walls' thickness, once per decomposition: up to four times the first spacing, room for
     // the count search's coarser rounds (kWallSizeFactor: elements no larger than a wall is thick)
     const std::vector<size::WallSample> walls =
@@ -462,10 +462,10 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     double best_miss = 1e300;
     for (int filling = 0; filling < 2; ++filling) {
       pipeline::BrepPlacement placed;
-      double placed_miss = 1e300, placed_np = np, last_predicted = 0, last_np = 0;
-      bool at_floor = false;  // a coarser base no longer lowered the count
-      // the spacings that bracket R: the coarsest seen above it and the finest seen below it
-      double over_np = 0, over_predicted = 0, under_np = 0, under_predicted = 0;
+      double placed_miss = 1e300, placed_np = np;
+      // the search's steps (count_calibration.hpp), stopping within 5% of R, at a bracket under
+      // 2% wide or at the floor (the curvature bound and the smallest features keep the count up)
+      pipeline::CountSearch search(want, 0.05, diag);
       for (int round = 0; round < 6; ++round) {
         const auto t_nodes = Clock::now();
         // the search's rounds share the placement's part of the bar (most end within three)
@@ -484,38 +484,16 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
         st.gen_nodes += since(t_nodes);
         ++st.placements;
         if (progress && !progress(placed_at(round + 1))) throw Cancelled();
-        const double predicted = scale * (6.2 * static_cast<double>(trial.inside_nodes()) + 2.65 * static_cast<double>(trial.boundary_nodes()));
+        const double predicted = pipeline::predicted_tets(static_cast<double>(trial.inside_nodes()), static_cast<double>(trial.boundary_nodes()), scale);
         const double miss = std::abs(predicted - want);
         if (miss < placed_miss) placed_miss = miss, placed = std::move(trial), placed_np = np;
-        if (opt.sizing.size > 0 || miss <= 0.05 * want) break;
-        // past the floor (the curvature bound and the smallest features keep the count up):
-        // a coarser base no longer lowers it, and the search stops there
-        if (predicted > want && last_predicted > 0 && np > last_np && predicted > 0.95 * last_predicted) {
-          at_floor = true;
-          break;
-        }
-        last_predicted = predicted, last_np = np;
-        if (predicted > want && (over_np == 0 || np > over_np)) over_np = np, over_predicted = predicted;
-        if (predicted < want && (under_np == 0 || np < under_np)) under_np = np, under_predicted = predicted;
-        double next = std::min(np * std::cbrt(predicted / want), diag);
-        if (over_np > 0 && under_np > over_np) {
-          // R bracketed: the count jumps between the two (a box's lattices of nodes: cantilever.brep
-          // at 10^5 predicted 91.5k at one spacing and 108.5k 3% finer), so the next lies between
-          // them, where the count's local power law (log-log between the two) puts R, at least a
-          // fifth of the bracket from either end; a bracket under 2% wide holds no better spacing
-          if (under_np / over_np < 1.02) break;
-          const double power = std::log(over_predicted / under_predicted) / std::log(under_np / over_np);
-          const double width = std::log(under_np / over_np);
-          next = std::clamp(over_np * std::pow(over_predicted / want, 1 / power), over_np * std::exp(0.2 * width),
-                            over_np * std::exp(0.8 * width));
-        }
-        if (std::abs(next / np - 1) < 0.01) break;
-        np = next;
+        if (opt.sizing.size > 0 || !search.step(np, predicted)) break;
+        np = search.next();
       }
       np = placed_np;
       carried_np = np;
       if (opt.max_elements > 0) {  // refused before the filling, where the memory goes
-        const double predicted = scale * (6.2 * static_cast<double>(placed.inside_nodes()) + 2.65 * static_cast<double>(placed.boundary_nodes()));
+        const double predicted = pipeline::predicted_tets(static_cast<double>(placed.inside_nodes()), static_cast<double>(placed.boundary_nodes()), scale);
         pipeline::check_element_bound(predicted, opt, in.source, element_bound_why(sizes));
       }
       const auto t_fill = Clock::now();
@@ -538,7 +516,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       ++st.fillings;
       const double count = static_cast<double>(cells.tets.size());
       const double miss = std::abs(count - want);
-      const double predicted_raw = 6.2 * static_cast<double>(placed.inside_nodes()) + 2.65 * static_cast<double>(placed.boundary_nodes());
+      const double predicted_raw = pipeline::predicted_tets(static_cast<double>(placed.inside_nodes()), static_cast<double>(placed.boundary_nodes()));
       if (miss < best_miss) {
         best_miss = miss, filled = std::move(cells), st.spacing = np;
         best = std::move(placed);
@@ -550,7 +528,7 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       if (opt.sizing.size > 0 || best_miss <= 0.1 * want) break;
       // above R at the floor: a second filling at a coarser base makes the same count again
       // (a 5 mm cylinder at a chord deviation of 3e-4 was filled twice, 45 s for 614k tetrahedra)
-      if (at_floor && count > want) break;
+      if (search.at_floor() && count > want) break;
       scale = carried_scale;
       np *= std::cbrt(count / want);
       carried_np = np;

@@ -92,7 +92,11 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   st.regions = static_cast<std::int64_t>(meshed.size());
   double volume = 0;
   for (const ConvexCell& c : d.cells) volume += pipeline::cell_polytope(d.model, c).volume();
-  const double start = opt.sizing.size > 0 ? opt.sizing.size : nominal_spacing(volume, static_cast<double>(want));
+  double area = 0;  // of the input's faces (an interface between regions once)
+  for (std::size_t f = 0; f < d.model.faces.size(); ++f)
+    if (d.model.faces[f].alive && d.model.faces[f].source >= 0) area += d.model.face_area(static_cast<Index>(f));
+  // where the count search starts (count_calibration.hpp's kPolyhedralNodes)
+  const double start = opt.sizing.size > 0 ? opt.sizing.size : pipeline::expected_spacing(volume, area, static_cast<double>(want), pipeline::kPolyhedralNodes);
   std::function<bool(double)> fill_progress;
   if (progress) fill_progress = [&](double x) { return progress(0.2 + 0.6 * x); };
   pipeline::Calibrated cal = pipeline::fill_to_count(d, start, opt.sizing.size, want, opt, fill_progress, st);

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
+#include <string>
 
 #include "bisect/io.hpp"
 #include "mesh2d/prep_regions.hpp"
@@ -136,6 +139,31 @@ TEST(ShrinkNodes, SharpCornersAreCutOff) {
   ASSERT_FALSE(nodes.empty());
   EXPECT_GT(min_distance(nodes), 0.45 * h);
   for (const Vec2& p : nodes) EXPECT_GT(p.x(), 0.5 * h / std::tan(5.0 * M_PI / 180));  // clear of the tip
+}
+
+TEST(ShrinkNodes, CornersARoundingErrorApartAreOne) {
+  // a piece of lug.stl's bottom face at 10^6 tetrahedra: its second layer's clipping left two
+  // corners a rounding error apart, whose edge had no direction; measured as a 5.9 degree corner
+  // and cut nearly ten spacings in, it took the whole layer away, and 0.56 of area got only the
+  // first layer's 160 nodes (a fan of long triangles across the rest, needles in the tetrahedra)
+  std::ifstream in(std::string(BISECT_TEST_DATA) + "/mesh2d/lug-bottom-piece.txt");
+  ASSERT_TRUE(in) << "tests/data/mesh2d/lug-bottom-piece.txt";
+  std::vector<Vec2> piece;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    double x = 0, y = 0;
+    row >> x >> y;
+    piece.emplace_back(x, y);
+  }
+  ASSERT_EQ(piece.size(), 179u);
+  double area = 0;
+  for (std::size_t i = 0; i < piece.size(); ++i) area += 0.5 * (piece[i].x() * piece[(i + 1) % piece.size()].y() - piece[i].y() * piece[(i + 1) % piece.size()].x());
+  const double h = 0.027186;
+  const std::vector<Vec2> nodes = shrink_nodes(piece, h, std::sqrt(3.0) / 4 * h * h);
+  // nodes at spacing h over the area less the boundary's own ring (measured: 606)
+  EXPECT_GT(static_cast<double>(nodes.size()), 0.5 * area / (std::sqrt(3.0) / 2 * h * h)) << "area " << area;
+  EXPECT_GT(min_distance(nodes), 0.45 * h);
 }
 
 TEST(ShrinkNodes, SmallPolygonGetsACentroidOrNothing) {

@@ -32,16 +32,19 @@ TEST(CountSearch, TheExpectedSpacingSolvesItsEquation) {
   for (double V : {1.0, 64.0, 5e5})
     for (double A : {0.0, 6.0, 4e4})
       for (double R : {100.0, 1e5, 1e6}) {
-        const double h = pipeline::expected_spacing(V, A, R);
+        const double h = pipeline::expected_spacing(V, A, R, pipeline::kBrepNodes);
         ASSERT_GT(h, 0) << V << " " << A << " " << R;
         EXPECT_NEAR((6.0 * V / h / h / h + 1.7 * A / h / h) / R, 1.0, 1e-9) << V << " " << A << " " << R;
         // with no boundary term, the volume's alone: finer than the thesis's nominal spacing
         // (8 V / h^3); a boundary's nodes carry tetrahedra too, so its term makes it coarser
-        if (A == 0) EXPECT_NEAR(h, std::cbrt(6.0 * V / R), 1e-9 * h);
-        if (A == 0) EXPECT_LT(h, nominal_spacing(V, R));
-        if (A > 0) EXPECT_GT(h, pipeline::expected_spacing(V, 0, R));
+        if (A == 0) {
+          EXPECT_NEAR(h, std::cbrt(6.0 * V / R), 1e-9 * h);
+          EXPECT_LT(h, nominal_spacing(V, R));
+        } else {
+          EXPECT_GT(h, pipeline::expected_spacing(V, 0, R, pipeline::kBrepNodes));
+        }
       }
-  EXPECT_EQ(pipeline::expected_spacing(0, 1, 1000), 0);  // no volume: no spacing (the caller's nominal is 0 too)
+  EXPECT_EQ(pipeline::expected_spacing(0, 1, 1000, pipeline::kBrepNodes), 0);  // no volume: no spacing (the caller's nominal is 0 too)
 }
 
 // A box with a hole: the start predicts R within 5%, so the nodes are placed once (twice when the
