@@ -159,9 +159,11 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
     const std::string why = walls_below(cap, start);
     if (!why.empty()) check_element_bound(nominal, opt, d.model.source, why, "the cells' volumes at their spacings");
   }
-  // the model's extent: no spacing coarser is of use
+  // the model's extent: no spacing coarser is of use; and its reach from its first node (at least
+  // half its diameter), where the floor below is measured
   Vec3 lo = d.model.nodes.front(), hi = lo;
-  for (const Vec3& p : d.model.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  double reach = 0;
+  for (const Vec3& p : d.model.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p), reach = std::max(reach, (p - d.model.nodes.front()).norm());
   const double largest = (hi - lo).norm();
   for (int fill_round = 0; fill_round < 3; ++fill_round) {
     SearchResult found;
@@ -198,8 +200,6 @@ Calibrated fill_to_count(const Decomposition& d, double start, double size, std:
     // out of reach: tell what the input allows (the count at a spacing the size of the model,
     // where only the input's own nodes and edges are left), as measured by the last filling
     double scratch = 0;
-    double reach = 0;  // at least half the model's diameter
-    for (const Vec3& p : d.model.nodes) reach = std::max(reach, (p - d.model.nodes.front()).norm());
     const Built coarsest = place_nodes(d, 2 * reach, cap, threads, grading, &scratch, true);
     const double floor = predict_tets(tally_nodes(d.model, coarsest), scale);
     out.count_floor = std::llround(floor);
