@@ -85,9 +85,21 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
     for (Index s : g.solids)
       for (Index f : in.solids[s].faces) take(face_region, f);
   }
+  // The input's solids' own faces and their edges: a body meshed on its own (brep_bodies.cpp:
+  // one of a compound's separate parts, whose input keeps every face of the shape) takes its
+  // sizes from its own geometry, not from its neighbours' (corpus/x_as1_tu_203.brep: 18 solids
+  // in 16 bodies, each of which sampled the whole shape's curvature, 10 of its 23 s).
+  std::vector<char> own_face(in.faces.size(), 0), own_edge(in.edges.size(), 0);
+  for (const BrepSolid& solid : in.solids)
+    for (Index f : solid.faces) {
+      own_face[f] = 1;
+      for (const auto& wire : in.faces[f].wires)
+        for (const BrepEdgeUse& use : wire) own_edge[use.edge] = 1;
+    }
   // faces: curvature at samples of every tessellation triangle (planar faces have none), and
   // region sizes
   for (std::size_t f = 0; f < in.faces.size() && f < tess.faces.size(); ++f) {
+    if (!own_face[f]) continue;
     const BrepFace& face = in.faces[f];
     const auto& tf = tess.faces[f];
     const bool curved = !face.planar && (o.curvature_elements > 0 || o.chord_deviation > 0);
@@ -141,7 +153,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
   // (at least one element along it), and region sizes; samples a fraction of a size apart
   for (std::size_t e = 0; e < in.edges.size(); ++e) {
     const BrepEdge& edge = in.edges[e];
-    if (edge.degenerate || !edge.curve) continue;
+    if (!own_edge[e] || edge.degenerate || !edge.curve) continue;
     poll();
     const ParametricCurve& c = *edge.curve;
     constexpr int kProbe = 32;

@@ -51,6 +51,8 @@ struct SizeSamplingCache {
   std::vector<Edge> edges;
 };
 
+// The sources come from the faces of in.solids and their edges alone (a compound's separate body,
+// meshed on its own, keeps every face of the shape in its input, brep_bodies.cpp).
 // base: the spacing from R or the size (already clamped by max_size). walls: the thickness
 // samples (wall_thickness.hpp), null for none. cache: the samples of earlier calls on the same
 // input and tessellation (null: none kept). cancelled (optional): asked once per tessellation
