@@ -88,7 +88,7 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
   // The input's solids' own faces and their edges: a body meshed on its own (brep_bodies.cpp:
   // one of a compound's separate parts, whose input keeps every face of the shape) takes its
   // sizes from its own geometry, not from its neighbours' (corpus/x_as1_tu_203.brep: 18 solids
-  // in 16 bodies, each of which sampled the whole shape's curvature, 10 of its 23 s).
+  // meshed body by body, each body sampling the whole shape's curvature: 10 of its 23 s).
   std::vector<char> own_face(in.faces.size(), 0), own_edge(in.edges.size(), 0);
   for (const BrepSolid& solid : in.solids)
     for (Index f : solid.faces) {
