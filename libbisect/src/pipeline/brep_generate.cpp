@@ -72,9 +72,10 @@ double tessellation_area(const BrepTessellation& tess) {
 // the depth t, and the layer holds nearly all the elements: the grid alone predicted 2e6
 // tetrahedra where the surface grids alone would have taken minutes to place. Per unit of area,
 // the count 8 / h^3 integrated over the depth of one grid step, less what the grid counts there
-// (the size at half that depth): nought where h0 is the grid's own scale.
-double boundary_layer_count(const BrepInput& in, const BrepTessellation& tess, const size::SizeField& h, double unit) {
-  const double g = h.grading(), base = h.base(), area = tessellation_area(tess);
+// (the size at half that depth): nought where h0 is the grid's own scale. area: tess's
+// (tessellation_area).
+double boundary_layer_count(const BrepInput& in, const BrepTessellation& tess, double area, const size::SizeField& h, double unit) {
+  const double g = h.grading(), base = h.base();
   if (!(area > 0) || !(unit > 0) || !(g > 0)) return 0;
   const double step = std::sqrt(area / kFieldSamples);  // about as many samples as the volume grid
   auto per_area = [&](double h0) {
@@ -139,8 +140,8 @@ double field_count(const BrepInput& in, const Decomposition& d, const size::Size
   const double unit = std::cbrt(total_volume / kFieldSamples);  // the layer's depth (boundary_layer_count)
   // every sample weighs 8 dv / h^3 with h at least h.smallest(): the grid's at most 8 / h^3 over
   // the cells' boxes, the layer's at most 8 unit / h^3 per unit of area
-  const double s = h.smallest();
-  const double bound = 8 * (boxes + tessellation_area(tess) * unit) / (s * s * s);
+  const double s = h.smallest(), area = tessellation_area(tess);
+  const double bound = 8 * (boxes + area * unit) / (s * s * s);
   if (bound <= limit) return bound;
   double count = 0;
   for (const Cell& cell : cells) {
@@ -163,7 +164,7 @@ double field_count(const BrepInput& in, const Decomposition& d, const size::Size
           count += 8 * dv / (hx * hx * hx);
         }
   }
-  return count + boundary_layer_count(in, tess, h, unit);
+  return count + boundary_layer_count(in, tess, area, h, unit);
 }
 
 // What keeps the elements smaller than R asks, for the element bound's message.
