@@ -139,11 +139,16 @@ class TetComplex {
 
   // The live tetrahedron whose closure holds p, by a visibility walk from `start` (a full scan
   // when the walk does not settle); -1 when p is outside every tetrahedron.
-  // near_only: when the walk does not settle, only the kNearSearch tetrahedra nearest p reached
-  // from where it stopped are searched, not the whole complex (for a point placed beside a
-  // tetrahedron, which may lie outside the mesh: a whole search cost 0.15 s at 10^6 each time).
+  // near_only: when the walk does not settle, only the tetrahedra nearest p reached from where
+  // it stopped are searched, not the whole complex (for a point placed beside a tetrahedron,
+  // which may lie outside the mesh: a whole search cost 0.15 s at 10^6 each time): those whose
+  // centroid lies within twice the longest edge of `start` and of the walk's last tetrahedron,
+  // plus start's own distance, of p, and at most kNearSearch of them.
   static constexpr std::size_t kNearSearch = 4096;
   Index locate(const Vec3& p, Index start, bool near_only = false) const;
+  // How many tetrahedra the last locate's near search tried (0 when its walk settled): for
+  // the tests, which hold the search near.
+  mutable std::size_t near_searched = 0;
   // Inserts node v (its position already in X) inside the complex: the tetrahedra whose
   // closure holds it are split (1-4 inside, 2-6 on a face, n-2n on an edge). Returns the new
   // tetrahedra, empty when v lies outside or on an existing node.
