@@ -74,7 +74,7 @@ struct Running {
 // 2-3 across face f of t when it raises the mean and keeps the smallest key.
 bool flip23(tet::TetComplex& cx, Index t, int f, Running& run) {
   thread_local std::vector<Tet> fresh;  // kept from call to call: tried at every face of every poor tetrahedron
-  if (!cx.flip23_tets(t, f, &fresh)) return false;
+  if (!cx.flip23_unchecked(t, f, &fresh)) return false;  // positive_all last: the dearest test
   const Index n = cx.neighbour(t, f);
   const std::vector<Vec3>& X = cx.X;
   double sum = 0;
@@ -88,6 +88,7 @@ bool flip23(tet::TetComplex& cx, Index t, int f, Running& run) {
   const double allowed = std::max({dihedral_cos(X, cx.tet[t]), dihedral_cos(X, cx.tet[n]), kGuardCos});
   for (const Tet& m : fresh)
     if (dihedral_cos(X, m) > allowed) return false;
+  if (!cx.positive_all(fresh)) return false;
   cx.replace({t, n}, fresh);
   run.sum += gain, run.count += 1;
   return true;

@@ -174,9 +174,13 @@ class TetComplex {
   bool remove_vertex(Index v);
   // The three tetrahedra a 2-3 transformation across face f of t would make (each corner of the
   // face replaced by the node beyond it), into `fresh`; false when f is on the boundary or
-  // constrained, or one of them would not be positive (the segment between the two apexes misses
-  // the face).
-  bool flip23_tets(Index t, int f, std::vector<Tet>* fresh) const;
+  // constrained. Their orientation is the caller's to test, with positive_all, after its quality
+  // keys: one that is not positive means the segment between the two apexes misses the face.
+  // An exact orientation is dearer than a key, and most trials fail on the key (tested first,
+  // flange.stl at 2*10^5 on one thread spent 4% of its run in orient3d's exact stage here, on
+  // the coplanar nodes of the cells' flat faces).
+  bool flip23_unchecked(Index t, int f, std::vector<Tet>* fresh) const;
+  bool positive_all(const std::vector<Tet>& tets) const;
   // improve() from every face of the given tetrahedra (new or changed ones), without a bound.
   std::int64_t improve_around(const std::vector<Index>& tets);
   // improve() from every unconstrained interior face.

@@ -66,7 +66,7 @@ bool TetComplex::try_flip22(Index t, int f, std::vector<std::pair<Index, int>>& 
   return false;
 }
 
-bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
+bool TetComplex::flip23_unchecked(Index t, int f, std::vector<Tet>* fresh) const {
   const Index n = neighbour(t, f);
   if (n < 0 || is_constrained(t, f)) return false;
   const auto fv = face(t, f);
@@ -75,9 +75,14 @@ bool TetComplex::flip23_tets(Index t, int f, std::vector<Tet>* fresh) const {
   for (Index c : fv) {  // each face corner of t replaced by e
     Tet m = tet[t];
     m[corner_of(t, c)] = e;
-    if (!positive(X, m)) return false;  // the segment between the apexes misses the face
     fresh->push_back(m);
   }
+  return true;
+}
+
+bool TetComplex::positive_all(const std::vector<Tet>& tets) const {
+  for (const Tet& m : tets)
+    if (!positive(X, m)) return false;
   return true;
 }
 
@@ -94,10 +99,11 @@ bool TetComplex::try_flip23(Index t, int f, std::vector<std::pair<Index, int>>& 
     return false;
   };
   std::vector<Tet>& fresh = fresh_;
-  if (!flip23_tets(t, f, &fresh)) return is_constrained(t, f) ? false : fail();
+  if (!flip23_unchecked(t, f, &fresh)) return false;  // constrained
   const double need = std::min(q[t], q[n]) * (1 + 1e-9);
   for (const Tet& m : fresh)
     if (!(tet_angle_key(X, m) > need)) return fail();  // the smallest solid angle would not rise
+  if (!positive_all(fresh)) return fail();  // the segment between the apexes misses the face
   old_.assign({t, n});
   for (Index id : replace(old_, fresh))
     for (int g = 0; g < 4; ++g) queue.push_back({id, g});

@@ -268,6 +268,34 @@ TEST(TetComplex, ConstrainedFacesAreNeverFlipped) {
   EXPECT_EQ(held.live_count(), 2u);
 }
 
+TEST(TetComplex, TwoThreeTetrahedraAreNotPositiveWhereTheApexesMissTheFace) {
+  // two tetrahedra on the triangle (0, 1, 2) with apexes above and below it: over its centre
+  // the three tetrahedra of the 2-3 transformation are positive; with the lower apex beyond the
+  // edge (0, 1) the segment between the apexes misses the triangle, one of them is inverted,
+  // positive_all says so, and the transformation is not made whatever the keys say
+  for (const double y : {0.3, -0.5}) {
+    std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 0.3, 0.6}, {0.5, y, -0.1}};
+    std::vector<Tet> t = {{0, 1, 2, 3}, {0, 1, 2, 4}};
+    for (Tet& x : t)
+      if (!positive(X, x)) std::swap(x[0], x[1]);
+    TetComplex cx(X);
+    cx.build(t);
+    const int f = cx.corner_of(0, 3);  // tetrahedron 0's face (0, 1, 2)
+    std::vector<Tet> fresh;
+    ASSERT_TRUE(cx.flip23_unchecked(0, f, &fresh));
+    ASSERT_EQ(fresh.size(), 3u);
+    const bool crosses = y > 0;
+    EXPECT_EQ(cx.positive_all(fresh), crosses) << "y " << y;
+    cx.improve_all(10);
+    expect_consistent(cx);
+    if (!crosses) EXPECT_EQ(cx.live_count(), 2u);
+    TetComplex held(X);  // a constrained face has no 2-3 tetrahedra at all
+    held.build(t);
+    held.constrain({face_key(0, 1, 2)});
+    EXPECT_FALSE(held.flip23_unchecked(0, f, &fresh));
+  }
+}
+
 TEST(TetComplex, AFailedFlipIsTriedAgainOnceATetrahedronChanges) {
   // two tetrahedra on a unit triangle, apexes 0.8 above and below its centre: the 2-3 flip would
   // lower the smallest solid angle (0.545 to 0.190 sr), so it fails and is remembered; with the
