@@ -17,6 +17,7 @@
 
 #include "bisect/balance_split.hpp"
 #include "bisect/edge_following.hpp"
+#include "bisect/section.hpp"
 #include "bisect/edge_wedges.hpp"
 #include "bisect/errors.hpp"
 #include "bisect/plane_cut.hpp"
@@ -99,12 +100,12 @@ constexpr int kWideMarginEdges = 16;
 const char* const kMethodNames[4] = {"cut_face", "edge_following", "splitting", "contour_splitting"};
 
 CutOutcome try_method(PolyhedralModel& m, Index r, const CutPlane& pl, Index a, Index b, int method,
-                      const DecomposeOptions& opt, const RegionEdges* edges = nullptr) {
+                      const DecomposeOptions& opt, const RegionSnapshot* snap = nullptr) {
   switch (method) {
-    case 0: return cut_region(m, r, pl, a, b, false, opt, edges);
-    case 1: return edge_following_cut(m, r, pl, a, b, false, opt, edges);
-    case 2: return cut_region(m, r, pl, a, b, true, opt, edges);
-    default: return edge_following_cut(m, r, pl, a, b, true, opt, edges);
+    case 0: return cut_region(m, r, pl, a, b, false, opt, snap);
+    case 1: return edge_following_cut(m, r, pl, a, b, false, opt, snap);
+    case 2: return cut_region(m, r, pl, a, b, true, opt, snap);
+    default: return edge_following_cut(m, r, pl, a, b, true, opt, snap);
   }
 }
 
@@ -247,7 +248,8 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
       if (done) continue;
     }
 
-    const RegionEdges edges = region_edges(m, r);  // unchanged until a cut succeeds
+    const RegionSnapshot snap = region_snapshot(m, r);  // unchanged until a cut succeeds
+    const RegionEdges& edges = snap.edges;
     const std::vector<ReflexEdge> reflex = reflex_edges(m, r, edges, tol);
     if (reflex.empty()) {
       ++finished;
@@ -279,7 +281,7 @@ Decomposition decompose_once(PolyhedralModel model, const DecomposeOptions& opt)
         for (int method : {stage.methods[0], stage.methods[1]}) {
           if (done) break;
           for (const CutPlane& pl : planes) {
-            const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim, &edges);
+            const CutOutcome c = try_method(m, r, pl, e.a, e.b, method, lim, &snap);
             if (c.ok) {
               accept(c, r, kMethodNames[method]);
               if (level > 0) ++st.bisections["relaxed_limits"];

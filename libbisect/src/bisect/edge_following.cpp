@@ -14,7 +14,7 @@
 namespace bisect {
 
 CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea, Index eb, bool contour,
-                              const DecomposeOptions& opt, const RegionEdges* given_edges) {
+                              const DecomposeOptions& opt, const RegionSnapshot* given) {
   CutOutcome out;
   auto reject = [&](const char* why) {
     out.reason = why;
@@ -22,10 +22,11 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
   };
   const double min_angle = opt.min_angle_deg * M_PI / 180.0;
   const double max_tilt = 45.0 * M_PI / 180.0;
-  RegionEdges own_edges;
-  if (!given_edges) own_edges = region_edges(m, r);
-  const RegionEdges& edges = given_edges ? *given_edges : own_edges;
-  SectionResult S = build_section(m, r, pl, false, opt, &edges);
+  RegionSnapshot own;
+  if (!given) own = region_snapshot(m, r);
+  const RegionSnapshot& snap = given ? *given : own;
+  const RegionEdges& edges = snap.edges;
+  SectionResult S = build_section(m, r, pl, false, opt, &snap);
   if (S.reject) return reject(S.reject);
   const Section& sec = S.sec;
 

@@ -16,6 +16,6 @@
 namespace bisect {
 
 CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& plane, Index ea, Index eb, bool contour,
-                              const DecomposeOptions& opt, const RegionEdges* edges = nullptr);
+                              const DecomposeOptions& opt, const RegionSnapshot* snap = nullptr);
 
 }  // namespace bisect

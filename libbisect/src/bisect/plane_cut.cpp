@@ -15,14 +15,14 @@
 namespace bisect {
 
 CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea, Index eb, bool whole_plane,
-                      const DecomposeOptions& opt, const RegionEdges* edges) {
+                      const DecomposeOptions& opt, const RegionSnapshot* snap) {
   CutOutcome out;
   auto reject = [&](const char* why) {
     out.reason = why;
     return out;
   };
   const double min_angle = opt.min_angle_deg * M_PI / 180.0;
-  SectionResult S = build_section(m, r, pl, whole_plane, opt, edges);
+  SectionResult S = build_section(m, r, pl, whole_plane, opt, snap);
   if (S.reject) return reject(S.reject);
   auto& info = S.info;
   auto& near = S.near;

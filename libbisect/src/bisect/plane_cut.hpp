@@ -16,6 +16,8 @@
 
 namespace bisect {
 
+struct RegionSnapshot;  // section.hpp
+
 struct CutPlane {
   Vec3 n;    // unit normal
   double c;  // n · x = c
@@ -30,8 +32,8 @@ struct CutOutcome {
 
 // Cuts region r. With whole_plane false only the section polygon bounded by edge (ea, eb) is
 // inserted (cut face); otherwise every section polygon is (splitting).
-// `edges`: the region's edge table, when the caller keeps one (see build_section).
+// `snap`: the region's snapshot, when the caller keeps one (see build_section).
 CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& plane, Index ea, Index eb, bool whole_plane,
-                      const DecomposeOptions& opt, const RegionEdges* edges = nullptr);
+                      const DecomposeOptions& opt, const RegionSnapshot* snap = nullptr);
 
 }  // namespace bisect

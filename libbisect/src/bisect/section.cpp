@@ -57,9 +57,46 @@ bool face_splits_cleanly(const PolyhedralModel& m, Index f, const std::vector<st
   return true;
 }
 
+namespace {
+
+// Each node's shortest edge among the faces' loops (an edge shared by two faces measured twice).
+template <class Table>
+void shortest_edges(const PolyhedralModel& m, const std::vector<Index>& faces, Table& info) {
+  for (Index f : faces)
+    for (const auto& loop : m.faces[f].loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index a = loop[i], b = loop[(i + 1) % loop.size()];
+        const double len = (m.nodes[a] - m.nodes[b]).norm();
+        info[a].min_len = std::min(info[a].min_len, len);
+        info[b].min_len = std::min(info[b].min_len, len);
+      }
+}
+
+}  // namespace
+
+RegionSnapshot region_snapshot(const PolyhedralModel& m, Index r) {
+  RegionSnapshot s;
+  s.edges = region_edges(m, r);
+  s.faces = m.live_faces(r);
+  s.slot.assign(m.nodes.size(), -1);
+  NodeTable info(m.nodes.size());  // the first-use order and shortest edges, as a section's own
+  shortest_edges(m, s.faces, info);
+  for (const auto& e : info) {
+    s.slot[e.first] = static_cast<int>(s.nodes.size());
+    s.nodes.push_back(e);
+  }
+  s.face_start.push_back(0);
+  for (Index f : s.faces) {
+    for (const auto& loop : m.faces[f].loops)
+      for (Index v : loop) s.face_entry.push_back(s.slot[v]);
+    s.face_start.push_back(static_cast<int>(s.face_entry.size()));
+  }
+  return s;
+}
+
 SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& pl, bool whole_plane,
-                            const DecomposeOptions& opt, const RegionEdges* given_edges) {
-  SectionResult res(m, pl);
+                            const DecomposeOptions& opt, const RegionSnapshot* snap) {
+  SectionResult res(m, pl, snap);
   auto fail = [&](const char* why) {
     res.reject = why;
     return std::move(res);
@@ -86,7 +123,9 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
     return best;
   };
   const double tol_on = 1e-10 * m.size;  // keeps cut faces planar to well within 1e-9
-  const std::vector<Index> F = m.live_faces(r);
+  std::vector<Index> own_faces;
+  if (!snap) own_faces = m.live_faces(r);
+  const std::vector<Index>& F = snap ? snap->faces : own_faces;
   auto& info = res.info;
   auto& near = res.near;
   Section& sec = res.sec;
@@ -95,15 +134,9 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
   auto& loop_of = res.loop_of;
   auto& poly_of = res.poly_of;
   auto& polys = res.polys;
-  // 1. Nodes: distance, side, shortest incident edge; nodes too near the plane.
-  for (Index f : F)
-    for (const auto& loop : m.faces[f].loops)
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        const Index a = loop[i], b = loop[(i + 1) % loop.size()];
-        const double len = (m.nodes[a] - m.nodes[b]).norm();
-        info[a].min_len = std::min(info[a].min_len, len);
-        info[b].min_len = std::min(info[b].min_len, len);
-      }
+  // 1. Nodes: distance, side, shortest incident edge (the snapshot's, else measured here); nodes
+  // too near the plane.
+  if (!snap) shortest_edges(m, F, info);
   for (auto& [v, I] : info) {
     I.d = pl.n.dot(m.nodes[v]) - pl.c;
     I.side = std::abs(I.d) <= tol_on ? 0 : (I.d > 0 ? 1 : -1);
@@ -112,11 +145,19 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
   if (whole_plane && !near.empty()) return fail("near_vertex");
 
   // 2. Chords: where the plane crosses a face, the inside intervals of the face's line.
-  for (Index f : F) {
+  for (std::size_t fi = 0; fi < F.size(); ++fi) {
+    const Index f = F[fi];
     const ModelFace& face = m.faces[f];
     bool pos = false, neg = false;
-    for (const auto& loop : face.loops)
-      for (Index v : loop) pos |= info[v].side > 0, neg |= info[v].side < 0;
+    if (snap) {
+      for (int k = snap->face_start[fi]; k < snap->face_start[fi + 1]; ++k) {
+        const int side = info.entry(snap->face_entry[k]).side;
+        pos |= side > 0, neg |= side < 0;
+      }
+    } else {
+      for (const auto& loop : face.loops)
+        for (Index v : loop) pos |= info[v].side > 0, neg |= info[v].side < 0;
+    }
     if (!pos || !neg) continue;
     const Vec3 line = pl.n.cross(face.normal);
     const char* face_flaw = std::asin(std::min(1.0, line.norm())) < min_angle ? "acute_angle" : nullptr;
@@ -164,8 +205,8 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
 
   // 3. Existing edges on the plane where the plane runs into the region.
   RegionEdges own_edges;
-  if (!given_edges) own_edges = region_edges(m, r);
-  const RegionEdges& edges = given_edges ? *given_edges : own_edges;
+  if (!snap) own_edges = region_edges(m, r);
+  const RegionEdges& edges = snap ? snap->edges : own_edges;
   for (const auto& [key, uses] : edges) {
     const Index a = key_lo(key), b = key_hi(key);
     if (info[a].side != 0 || info[b].side != 0) continue;

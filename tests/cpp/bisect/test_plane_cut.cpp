@@ -9,6 +9,7 @@
 #include "bisect/io.hpp"
 #include "bisect/plane_cut.hpp"
 #include "bisect/polyhedral_model.hpp"
+#include "bisect/section.hpp"
 #include "poly_shapes.hpp"
 
 namespace bisect {
@@ -79,6 +80,55 @@ TEST(PlaneCut, RejectsAPlaneThatMissesTheInterior) {
   const CutOutcome c = cut_region(m, 0, {n, n.dot(Vec3(2, 0, 0))}, 1, 7, false, DecomposeOptions{});
   EXPECT_FALSE(c.ok);
   EXPECT_EQ(c.reason, "not_interior");
+}
+
+TEST(PlaneCut, ASectionFromTheRegionsSnapshotIsTheSectionWorkedOutAlone) {
+  // the U and the L with a node near y = 1: planes in several directions, through nodes, near
+  // them and between them, whole or at the notch's edge. The snapshot (made once while planes
+  // are tried) gives each node the same distance, side and shortest edge, and the same pieces,
+  // loops and verdict, as the section that measures everything itself.
+  std::vector<Vec2> l = kL;
+  l.push_back(Vec2(0, 1.02));
+  std::size_t compared = 0, rejected = 0;
+  for (const std::string& text : {prism(kU), prism(l)}) {
+    const PolyhedralModel m = model(text);
+    const RegionSnapshot snap = region_snapshot(m, 0);
+    EXPECT_EQ(snap.faces, m.live_faces(0));
+    for (const Vec3& dir : {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(1, 1, 0), Vec3(1, 2, 0.5)})
+      for (const double at : {0.25, 0.5, 1.0, 1.01, 1.5, 2.0})
+        for (const bool whole : {false, true}) {
+          const Vec3 n = dir.normalized();
+          const CutPlane pl{n, at};
+          const SectionResult alone = build_section(m, 0, pl, whole, DecomposeOptions{});
+          const SectionResult kept = build_section(m, 0, pl, whole, DecomposeOptions{}, &snap);
+          ++compared;
+          ASSERT_EQ(alone.reject == nullptr, kept.reject == nullptr);
+          if (alone.reject) {
+            ++rejected;
+            EXPECT_STREQ(alone.reject, kept.reject);
+          }
+          std::vector<std::pair<Index, NodeInfo>> a(alone.info.begin(), alone.info.end()), b(kept.info.begin(), kept.info.end());
+          ASSERT_EQ(a.size(), b.size());
+          for (std::size_t k = 0; k < a.size(); ++k) {
+            EXPECT_EQ(a[k].first, b[k].first);
+            EXPECT_EQ(a[k].second.d, b[k].second.d);
+            EXPECT_EQ(a[k].second.side, b[k].second.side);
+            EXPECT_EQ(a[k].second.min_len, b[k].second.min_len);
+          }
+          EXPECT_EQ(alone.near, kept.near);
+          ASSERT_EQ(alone.sec.pieces.size(), kept.sec.pieces.size());
+          for (std::size_t k = 0; k < alone.sec.pieces.size(); ++k) {
+            EXPECT_EQ(alone.sec.pieces[k].from, kept.sec.pieces[k].from);
+            EXPECT_EQ(alone.sec.pieces[k].to, kept.sec.pieces[k].to);
+            EXPECT_EQ(alone.sec.pieces[k].face, kept.sec.pieces[k].face);
+          }
+          EXPECT_EQ(alone.loops, kept.loops);
+          EXPECT_EQ(alone.polys, kept.polys);
+        }
+  }
+  EXPECT_EQ(compared, 120u);
+  EXPECT_GT(rejected, 0u);             // some planes fail (near a node, along a face)
+  EXPECT_LT(rejected, compared / 2);   // most make a section
 }
 
 TEST(EdgeFollowing, WalksAlongEdgesAndStitchesTriangles) {
