@@ -77,8 +77,12 @@ class BrepBoundary {
   // Every live model edge discretised once by h (ARCHITECTURE.md §1: edges discretised once, by
   // one size field): model nodes first (ids = model node ids), then each edge's inner nodes.
   // edge_nodes[(lo, hi)]: the inner nodes from lo to hi. cancelled (optional): asked once per
-  // model edge, a true answer throws Cancelled (up to 4096 curve points and size queries each).
-  void discretise_edges(const size::SizeField& h, const std::function<bool()>& cancelled = {});
+  // model edge, on any of the threads (util::ParallelPoll's hook), a true answer throws Cancelled
+  // (up to 4096 curve points and size queries each). The same nodes for every thread count.
+  void discretise_edges(const size::SizeField& h, const std::function<bool()>& cancelled = {}, int threads = 1);
+  // Model edge (a, b)'s inner nodes from a to b: proxy points, true points, what each lies on.
+  void discretise_edge(Index a, Index b, const size::SizeField& h, std::vector<Vec3>* p, std::vector<Vec3>* x,
+                       std::vector<PointOn>* on) const;
   BoundaryNodes nodes;
   std::map<std::pair<Index, Index>, std::vector<Index>> edge_nodes;
   // Edges to cut into this many times the segments the size asks for: a face piece whose

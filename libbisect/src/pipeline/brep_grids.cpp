@@ -37,7 +37,7 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
   util::ParallelPoll poll(progress);
   const std::function<bool()> cancelled = poll.hook();
   const std::function<void()> idle = [&poll] { poll.idle(); };
-  bd.discretise_edges(h, cancelled);
+  bd.discretise_edges(h, cancelled, threads);
   const PolyhedralModel& m = d.model;
   std::vector<std::vector<CellSide>> cells_of(m.faces.size());
   for (std::size_t c = 0; c < d.cells.size(); ++c)
@@ -108,7 +108,7 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
   };
   const std::size_t n = jobs.size() + cut_faces.size();
   for (int round = 0;; ++round) {
-    if (round > 0) bd.discretise_edges(h, cancelled);
+    if (round > 0) bd.discretise_edges(h, cancelled, threads);
     BrepGrids g;
     g.nodes = bd.nodes;
     g.pieces.resize(jobs.size());

@@ -12,6 +12,8 @@
 #include "occ_shapes.hpp"
 #include "pipeline/brep_boundary.hpp"
 #include "pipeline/brep_proxy.hpp"
+#include "size/size_field.hpp"
+#include "bisect/errors.hpp"
 
 namespace bisect {
 namespace {
@@ -88,6 +90,37 @@ TEST(BrepCutNodes, NodesAwayFromCurvedEdgesStayWhereTheyAre) {
   const Vec3 shift = plate.bd.cut_node_image(plate.on_top(), near) - near;
   EXPECT_LT(shift.norm(), 0.14);
   EXPECT_LE(shift.y(), 1e-12) << "away from the hole's axis";
+}
+
+TEST(BrepCutNodes, EdgesAreDiscretisedTheSameOnEveryThreadCount) {
+  // the plate's model edges at a size graded down to 0.05 at the hole's near side: inner nodes on
+  // the circle's chords (on the true arc), on straight edges, and on the plate's faces; made on
+  // 1, 2 and 4 threads, the same nodes in the same order, each pair of ends' inner nodes listed
+  HolePlate plate;
+  size::SizeField h(0.4, 0.3);
+  h.add(Vec3(1, 2, 2), 0.05);
+  h.finish();
+  plate.bd.discretise_edges(h, {}, 1);
+  const pipeline::BoundaryNodes one = plate.bd.nodes;
+  const auto lists = plate.bd.edge_nodes;
+  ASSERT_GT(one.x.size(), plate.model.nodes.size() + 100);  // inner nodes made
+  std::size_t inner = 0;
+  for (const auto& [ends, nodes] : lists) inner += nodes.size();
+  EXPECT_EQ(inner, one.x.size() - plate.model.nodes.size());  // each inner node on one edge's list
+  for (int threads : {2, 4}) {
+    plate.bd.discretise_edges(h, {}, threads);
+    EXPECT_EQ(plate.bd.edge_nodes, lists) << threads << " threads";
+    ASSERT_EQ(plate.bd.nodes.x.size(), one.x.size()) << threads << " threads";
+    for (std::size_t v = 0; v < one.x.size(); ++v) {
+      ASSERT_EQ(plate.bd.nodes.x[v], one.x[v]) << "node " << v << ", " << threads << " threads";
+      ASSERT_EQ(plate.bd.nodes.p[v], one.p[v]) << "node " << v << ", " << threads << " threads";
+      ASSERT_EQ(plate.bd.nodes.on[v].kind, one.on[v].kind);
+      ASSERT_EQ(plate.bd.nodes.on[v].id, one.on[v].id);
+      ASSERT_EQ(plate.bd.nodes.on[v].t, one.on[v].t);
+    }
+  }
+  // a cancelled discretisation throws, from whichever thread asks
+  EXPECT_THROW(plate.bd.discretise_edges(h, [] { return true; }, 2), Cancelled);
 }
 
 }  // namespace
