@@ -90,9 +90,9 @@ class NodeTable {
   explicit NodeTable(const RegionSnapshot& s) : shared_(&s.slot), entries_(s.nodes) {}
   NodeInfo& operator[](Index v) {
     if (shared_) {
-      const int s = (*shared_)[v];
+      const int s = static_cast<std::size_t>(v) < shared_->size() ? (*shared_)[v] : -1;
       if (s >= 0) return entries_[s].second;
-      // a node not of the region (none is asked for): an entry of its own
+      // a node not of the region, or made after the snapshot (none is asked for): its own entry
       const auto [it, fresh] = extra_.try_emplace(v, static_cast<int>(entries_.size()));
       if (fresh) entries_.push_back({v, NodeInfo{}});
       return entries_[it->second].second;
