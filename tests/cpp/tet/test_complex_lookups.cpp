@@ -8,6 +8,7 @@
 
 #include "optimize/grid_cube.hpp"
 #include "optimize/node_stars.hpp"
+#include "tet/tet_test_meshes.hpp"
 #include "tet/tet_complex.hpp"
 
 namespace bisect::tet {
@@ -120,41 +121,20 @@ TEST(ComplexLookups, NearLocationFindsAPointRoundANotchAndNoneOutside) {
     for (bool near_only : {false, true}) EXPECT_EQ(cx.locate(outside, start, near_only), -1) << "near_only " << near_only;
 }
 
-// The unit cube as n^3 small cubes of 6 tetrahedra each (Kuhn's: the paths along the axes from
-// a cube's corner to the opposite one), every tetrahedron positive: small tetrahedra up to the
-// boundary, as a mesher's are.
-TetComplex kuhn_cube(int n, std::vector<Vec3>* X) {
-  auto id = [n](int i, int j, int k) { return static_cast<Index>((i * (n + 1) + j) * (n + 1) + k); };
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      for (int k = 0; k <= n; ++k) X->push_back(Vec3(i, j, k) / n);
-  const int axes[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  std::vector<Tet> tets;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-        for (const auto& order : axes) {
-          int at[3] = {i, j, k};
-          Tet t;
-          t[0] = id(at[0], at[1], at[2]);
-          for (int s = 0; s < 3; ++s) ++at[order[s]], t[s + 1] = id(at[0], at[1], at[2]);
-          const Vec3 &a = (*X)[t[0]], &b = (*X)[t[1]], &c = (*X)[t[2]], &d = (*X)[t[3]];
-          if ((b - a).cross(c - a).dot(d - a) < 0) std::swap(t[2], t[3]);
-          tets.push_back(t);
-        }
-  TetComplex cx(*X);
-  cx.build(tets);
-  return cx;
-}
-
 TEST(ComplexLookups, NearLocationOfAPointOutsideStopsAroundItsStart) {
-  // 20^3 cubes (48,000 tetrahedra): a point a fifth of a cube outside a face, looked for from
-  // the tetrahedron nearest it, as the sliver repair's trial nodes are. None holds it; the search
-  // gives up among the tetrahedra round the start, not after kNearSearch of them.
-  std::vector<Vec3> X;
-  const TetComplex cx = kuhn_cube(20, &X);
+  // the cube [0, 20]^3 as 20^3 cubes of 6 tetrahedra (48,000, test::cube_mesh): a point a fifth
+  // of a cube outside a face, looked for from the tetrahedron nearest it, as the sliver repair's
+  // trial nodes are. None holds it; the search gives up among the tetrahedra round the start,
+  // not after kNearSearch of them.
+  const TetMesh grid = test::cube_mesh(20);
+  std::vector<Tet> tets(grid.num_tets());
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    for (int i = 0; i < 4; ++i) tets[t][i] = grid.tet_node(t, i);
+  const std::vector<Vec3>& X = grid.nodes;
+  TetComplex cx(X);
+  cx.build(tets);
   ASSERT_EQ(cx.tet.size(), 48000u);
-  const Vec3 outside(1.01, 0.51, 0.52);
+  const Vec3 outside(20.2, 10.2, 10.4);
   Index start = -1;
   double best = 1e9;
   for (std::size_t t = 0; t < cx.tet.size(); ++t) {
@@ -169,7 +149,7 @@ TEST(ComplexLookups, NearLocationOfAPointOutsideStopsAroundItsStart) {
   // without near_only, the whole complex (every tetrahedron tried)
   EXPECT_EQ(cx.locate(outside, start, false), -1);
   // a point inside, from a start far off: the walk finds it (the bound is the near search's)
-  const Vec3 inside(0.99, 0.51, 0.52);
+  const Vec3 inside(19.8, 10.2, 10.4);
   const Index t = cx.locate(inside, 0, true);
   ASSERT_GE(t, 0);
   EXPECT_TRUE(holds(cx, t, inside));
