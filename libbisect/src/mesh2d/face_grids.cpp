@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -17,9 +18,29 @@ namespace {
 
 std::pair<Index, Index> edge_key(Index a, Index b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
+// Which edges of the live faces are creases of the input: two of their faces lie on different
+// input faces. The others were made by the cuts (on a cut face, or across an input face).
+std::map<std::pair<Index, Index>, bool> input_creases(const PolyhedralModel& model) {
+  std::map<std::pair<Index, Index>, Index> source;  // the first input face seen on the edge
+  std::map<std::pair<Index, Index>, bool> crease;
+  for (const ModelFace& f : model.faces) {
+    if (!f.alive) continue;
+    for (const auto& loop : f.loops)
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const auto e = edge_key(loop[i], loop[(i + 1) % loop.size()]);
+        bool& c = crease[e];
+        if (f.source < 0 || c) continue;
+        const auto [it, fresh] = source.emplace(e, f.source);
+        c = !fresh && it->second != f.source;
+      }
+  }
+  return crease;
+}
+
 // Every edge of the live faces discretised once: node spacings no larger than h (or the
 // smallest spacing of the edge's faces, face_h), than the node's shortest edge, nor than the
-// spacing the input asks of the node; inner nodes graded between them.
+// spacing the input asks of the node; inner nodes graded between them. An edge the cuts made
+// asks for cut_edge_spacing instead of its length (spacing.hpp).
 void discretise_edges(const PolyhedralModel& model, double h, const std::vector<double>& face_h, FaceGrids& g) {
   g.nodes = model.nodes;
   g.face_of.assign(g.nodes.size(), -1);
@@ -27,6 +48,7 @@ void discretise_edges(const PolyhedralModel& model, double h, const std::vector<
   for (std::size_t v = 0; v < model.node_spacing.size() && v < g.spacing.size(); ++v)
     if (model.node_spacing[v] > 0) g.spacing[v] = std::min(h, model.node_spacing[v]);
   g.edge_nodes.clear();
+  const auto crease = input_creases(model);
   std::map<std::pair<Index, Index>, double> edge_h;  // per edge: the smallest of its faces' spacings
   for (std::size_t fi = 0; fi < model.faces.size(); ++fi) {
     const ModelFace& f = model.faces[fi];
@@ -34,7 +56,8 @@ void discretise_edges(const PolyhedralModel& model, double h, const std::vector<
     for (const auto& loop : f.loops)
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Index a = loop[i], b = loop[(i + 1) % loop.size()];
-        const double len = (model.nodes[a] - model.nodes[b]).norm();
+        double len = (model.nodes[a] - model.nodes[b]).norm();
+        if (!crease.at(edge_key(a, b))) len = cut_edge_spacing(len, face_h[fi]);
         g.spacing[a] = std::min({g.spacing[a], len, face_h[fi]});
         g.spacing[b] = std::min({g.spacing[b], len, face_h[fi]});
         g.edge_nodes.emplace(edge_key(a, b), std::vector<Index>{});
