@@ -5,6 +5,7 @@
 #include <limits>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "bisect/errors.hpp"
 #include "bisect/quality.hpp"
@@ -189,7 +190,7 @@ void TetComplex::undo(std::vector<Replacement>& entries, const std::vector<Index
   for (auto r = entries.rbegin(); r != entries.rend(); ++r) {
     std::vector<Index> made;
     for (const Tet& t : r->made) made.push_back(id_of(t));
-    const std::vector<Index> back = replace(made, r->old);
+    const std::vector<Index> back = r->new_boundary ? undo_boundary_change(made, r->old) : replace(made, r->old);
     for (std::size_t i = 0; i < back.size(); ++i) {
       tag[back[i]] = r->old_tags[i];
       where[key(r->old[i])].push_back({r->old[i], back[i]});
@@ -197,6 +198,42 @@ void TetComplex::undo(std::vector<Replacement>& entries, const std::vector<Index
   }
   entries.clear();
   journal = keep;
+}
+
+std::vector<Index> TetComplex::undo_boundary_change(const std::vector<Index>& made, const std::vector<Tet>& old) {
+  // The outer boundary's triangles of `made` that `old` has not go, with their input face (one:
+  // a 2-2 flip stays within its face); `old`'s that `made` has not come back with it. Without
+  // this, replace() took the old boundary triangles for faces meeting nothing (part.stl at 10^5
+  // with --boundary-flips: the sliver repair's undone second go threw).
+  const auto faces_of = [](const Tet& t) {
+    return std::array<FaceKey, 4>{face_key(t[1], t[2], t[3]), face_key(t[0], t[2], t[3]), face_key(t[0], t[1], t[3]), face_key(t[0], t[1], t[2])};
+  };
+  std::unordered_set<FaceKey, FaceKeyHash> old_faces, made_faces;
+  for (const Tet& t : old)
+    for (const FaceKey& k : faces_of(t)) old_faces.insert(k);
+  Index input_face = -1;
+  for (Index m : made)
+    for (int f = 0; f < 4; ++f) {
+      const auto fv = face(m, f);
+      const FaceKey k = face_key(fv[0], fv[1], fv[2]);
+      made_faces.insert(k);
+      if (neighbour(m, f) >= 0 || old_faces.count(k)) continue;
+      const auto it = surface_tag.find(k);
+      if (it == surface_tag.end()) continue;
+      if (input_face >= 0 && it->second != input_face) throw MeshingError("tetrahedral complex: a boundary change to undo spans two input faces");
+      input_face = it->second;
+      surface_tag.erase(it);
+    }
+  std::vector<Index> back = replace(made, old, true);
+  if (input_face >= 0)
+    for (Index b : back)
+      for (int f = 0; f < 4; ++f) {
+        if (neighbour(b, f) >= 0) continue;
+        const auto fv = face(b, f);
+        const FaceKey k = face_key(fv[0], fv[1], fv[2]);
+        if (!made_faces.count(k)) surface_tag.emplace(k, input_face);
+      }
+  return back;
 }
 
 void TetComplex::refresh_quality() {
@@ -297,7 +334,7 @@ std::vector<Index> TetComplex::replace(const std::vector<Index>& old, const std:
     }
   const Index inherited = old.empty() ? 0 : tag[old.front()];
   if (journal) {
-    journal->push_back({{}, {}, {}});
+    journal->push_back({{}, {}, {}, new_boundary});
     for (Index o : old) journal->back().old.push_back(tet[o]), journal->back().old_tags.push_back(tag[o]);
   }
   for (Index o : old) {

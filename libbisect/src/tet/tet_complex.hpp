@@ -87,11 +87,15 @@ class TetComplex {
     std::vector<Tet> made;
     std::vector<Tet> old;
     std::vector<Index> old_tags;
+    bool new_boundary = false;  // replace()'s: a change of the outer boundary (a 2-2 flip)
   };
   std::vector<Replacement>* journal = nullptr;
   // among: when given, the ids the journalled changes made are all in it (the `touched` log of
   // a local change), and only those are searched, not the whole complex.
   void undo(std::vector<Replacement>& entries, const std::vector<Index>* among = nullptr);
+  // undo()'s step for a change of the outer boundary: replace() with new_boundary, and the
+  // surface tags of the triangles it gives back. Returns the ids of `old` put back.
+  std::vector<Index> undo_boundary_change(const std::vector<Index>& made, const std::vector<Tet>& old);
   // When set, the long loops (the transformations' queue, the smoothing, the sliver repair) call
   // it now and then (every kPollEvery steps); true stops them with Cancelled. The optimiser sets
   // it from the progress callback, so that Stop takes effect within a pass.

@@ -91,5 +91,47 @@ TEST(Undo, TakesBackALocalChangeFromItsOwnLog) {
   EXPECT_TRUE(validate(m).empty());
 }
 
+// A 2-2 flip on the outer boundary (--boundary-flips) undone: its two boundary triangles and
+// their input face come back. Before, undo() put the old tetrahedra back as if inside and threw
+// "a replacement does not fill the space it replaces" (part.stl at 10^5 with --boundary-flips,
+// the sliver repair's second go undone).
+TEST(Undo, TakesBackAFlipOfTheOuterBoundaryWithItsFaceTags) {
+  // two tetrahedra over the long diagonal x y of a flat rhombus x d y e, apex c: the 2-2 flip to
+  // the short diagonal d e makes both better
+  const std::vector<Vec3> X{{0, 0, 0}, {2, 0, 0}, {1, -0.5, 0}, {1, 0.5, 0}, {1, 0, 0.8}};
+  const Index x = 0, y = 1, d = 2, e = 3, c = 4;
+  TetComplex cx(X);
+  std::vector<Tet> two{{x, y, d, c}, {x, y, e, c}};
+  for (Tet& t : two)
+    if (!positive(X, t)) std::swap(t[0], t[1]);
+  cx.build(two);
+  // every outer triangle tagged: the rhombus input face 7, each side its own
+  Index side = 10;
+  for (std::size_t t = 0; t < 2; ++t)
+    for (int f = 0; f < 4; ++f) {
+      if (cx.neighbour(static_cast<Index>(t), f) >= 0) continue;
+      const auto fv = cx.face(static_cast<Index>(t), f);
+      const bool flat = X[fv[0]].z() == 0 && X[fv[1]].z() == 0 && X[fv[2]].z() == 0;
+      cx.surface_tag[face_key(fv[0], fv[1], fv[2])] = flat ? 7 : side++;
+    }
+  const auto before = canonical(cx);
+  const auto tags_before = cx.surface_tag;
+  std::vector<TetComplex::Replacement> journal;
+  cx.journal = &journal;
+  cx.boundary_flips = true;
+  ASSERT_GT(cx.improve_all(std::numeric_limits<std::int64_t>::max()), 0);
+  cx.journal = nullptr;
+  ASSERT_EQ(cx.surface_tag.count(face_key(x, d, e)), 1u) << "the boundary was not flipped";
+  EXPECT_EQ(cx.surface_tag.count(face_key(x, y, d)), 0u);
+  ASSERT_NO_THROW(cx.undo(journal));
+  EXPECT_EQ(canonical(cx), before);
+  EXPECT_EQ(cx.surface_tag, tags_before);
+  std::size_t outer = 0;
+  for (std::size_t t = 0; t < cx.tet.size(); ++t)
+    if (cx.alive[t])
+      for (int f = 0; f < 4; ++f) outer += cx.neighbour(static_cast<Index>(t), f) < 0;
+  EXPECT_EQ(outer, 6u);  // the two tetrahedra meet across x y c again
+}
+
 }  // namespace
 }  // namespace bisect::tet
