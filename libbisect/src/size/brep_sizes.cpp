@@ -66,9 +66,12 @@ SizeField brep_size_field(const BrepInput& in, const BrepTessellation& tess, dou
   // A floor under every size even without min_size: a cone's apex or a pole has unbounded
   // curvature, and the curvature bound would ask for ever smaller elements towards it. A
   // thousandth of the shape's diagonal keeps the finest element to a size a FEM model can use
-  // (min_size, when given and larger, rules).
+  // (min_size, when given and larger, rules). It stays under max_size, when given: a user's
+  // --max-size 0.2 on Angled.step (diagonal 223) was refused for "the minimum size 0.223".
   const double diag = (in.bbox_max - in.bbox_min).norm();
-  const double floor = std::max(o.min_size, std::min(1e-3 * diag, 0.5 * base));
+  double floor = std::min(1e-3 * diag, 0.5 * base);
+  if (o.max_size > 0) floor = std::min(floor, o.max_size);
+  floor = std::max(o.min_size, floor);
   SizeField field(base, o.size_grading, floor, o.max_size);
   auto add = [&](const Vec3& p, double s, std::size_t* counter) {
     if (s < field.base()) {

@@ -3,8 +3,10 @@
 // the optimisation, not at the end of each.
 #include <gtest/gtest.h>
 
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -44,6 +46,34 @@ TEST(BrepBoundedWork, TheBoundCountsTheLayerUnderAFinelyBoundedCurvedFace) {
     EXPECT_NE(what.find("cylinder: the size field's samples over the cells predict about"), std::string::npos) << what;
     EXPECT_NE(what.find("over the limit of 3e+06"), std::string::npos) << what;
   }
+}
+
+TEST(BrepBoundedWork, AMaximumSizeUnderTheSizeFloorIsBoundedBeforeTheNodesArePlaced) {
+  // a rod 100 x 0.1 x 0.1: the size field's own floor is a thousandth of the diagonal, 0.1. A
+  // maximum size of 0.09 under it was refused for "the minimum size 0.1 exceeds the maximum
+  // 0.09", a minimum the user never gave; and a maximum size under the count's spacing was
+  // bounded only after the nodes were placed (Angled.step with --max-size 0.2: 6 minutes)
+  GenerateOptions opt;
+  opt.sizing.elements = 100;
+  opt.sizing.max_size = 0.09;
+  opt.max_elements = 5000;
+  opt.limit_cause = "a test's limit";
+  try {
+    generate_brep_mesh(test::input_through_string(BRepPrimAPI_MakeBox(100, 0.1, 0.1).Shape(), "rod"), opt);
+    FAIL() << "meshed past the bound";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("rod: the size field's samples over the cells predict about"), std::string::npos) << what;
+    EXPECT_NE(what.find("(elements no larger than the maximum size 0.09)"), std::string::npos) << what;
+  }
+  // within the bound it meshes, every edge near the maximum or under it
+  opt.max_elements = 1e6;
+  const TetMesh m = generate_brep_mesh(test::input_through_string(BRepPrimAPI_MakeBox(100, 0.1, 0.1).Shape(), "rod"), opt);
+  double longest = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) longest = std::max(longest, (m.nodes[m.tet_node(t, i)] - m.nodes[m.tet_node(t, j)]).norm());
+  EXPECT_LT(longest, 2 * 0.09);
 }
 
 // How much slower than the release build this one runs: timing bounds scale by it.
