@@ -32,7 +32,8 @@ inline constexpr double kSpacingGrowth = 0.3;
 // held the coarsest counts up (lug.stl 1,353 tetrahedra, Angled.stl 31,665, flange.stl 15,547).
 // The nodes of a short edge keep it in their face's grid, so a spacing far above its length makes
 // needles round it (part.stl at 10^5: an edge 0.047 long across a wall at h = 2.8, 3 degrees):
-// three times the length keeps their angles near 20 degrees. A half of h_face instead of a third
+// at three times the length, the triangle standing on it has an apex of about 19 degrees (the
+// grids' optimisation then works from there). A half of h_face instead of a third
 // lowered the mean alpha of Angled.stl's and flange.stl's coarsest meshes.
 inline constexpr double kCutEdgeSpacingRel = 1.0 / 3.0;
 inline constexpr double kCutEdgeSpacingMul = 3.0;
