@@ -61,18 +61,27 @@ class StopLatencyTest(unittest.TestCase):
         self.assertEqual(fractions, sorted(fractions), "the bar never goes back")
         gaps = [b[0] - a[0] for a, b in zip(calls, calls[1:])]
         report = {"elements": mesh.VolumeCount, "seconds": total, "calls": len(calls), "longest_gap": max(gaps), "stops": []}
+        # the moments are fractions of the fastest whole run seen: a run that ends before its
+        # moment (the first, timed run was slow: ctest runs another test beside it) says how
+        # fast a run is now, and the same fraction is tried once more at that pace (in CI the
+        # first run took 6.1 s and four of the ten ended before their moments)
+        fastest = total
         for k in range(10):
-            at = total * (k + 0.5) / 10
-            begun = time.perf_counter()
+            for attempt in range(2):
+                at = fastest * (k + 0.5) / 10
+                begun = time.perf_counter()
 
-            def stop(fraction, at=at, begun=begun):
-                return time.perf_counter() - begun < at
+                def stop(fraction, at=at, begun=begun):
+                    return time.perf_counter() - begun < at
 
-            try:
-                shape_mesher.mesh_shape(shape, elements=ELEMENTS, order=1, progress=stop)
-                finished = None  # done before the moment came: nothing to stop
-            except bisectmesh.core().Cancelled:
-                finished = time.perf_counter() - begun
+                try:
+                    shape_mesher.mesh_shape(shape, elements=ELEMENTS, order=1, progress=stop)
+                    finished = None  # done before the moment came: nothing to stop
+                    fastest = min(fastest, time.perf_counter() - begun)
+                except bisectmesh.core().Cancelled:
+                    finished = time.perf_counter() - begun
+                if finished is not None:
+                    break
             if finished is None:
                 continue
             latency = finished - at
