@@ -31,6 +31,11 @@ class ParametricSurface {
   // The largest absolute principal curvature at uv (1 / radius), from the first and second
   // fundamental forms; 0 where the surface is flat or the parametrisation degenerates.
   double max_curvature(const Vec2& uv) const;
+  // The principal curvatures k1 <= k2 at uv, signed against the unit normal du x dv: a surface
+  // bending away from that normal (a sphere's outside, du x dv outward) has both negative. At a
+  // degenerate point of the parameters (a pole) they are the limit beside it; false, both 0,
+  // where the parametrisation degenerates further.
+  bool principal_curvatures(const Vec2& uv, double* k1, double* k2) const;
 };
 
 class ParametricCurve {

@@ -33,24 +33,44 @@ void ParametricSurface::second_derivatives(const Vec2& uv, Vec3* duu, Vec3* duv,
   *duv = 0.5 * (dvu + (a - c) / (2 * hv));
 }
 
-double ParametricSurface::max_curvature(const Vec2& uv) const {
+bool ParametricSurface::principal_curvatures(const Vec2& uv0, double* k1, double* k2) const {
   Vec3 xu, xv, xuu, xuv, xvv;
-  derivatives(uv, &xu, &xv);
-  const Vec3 n = xu.cross(xv);
-  const double nn = n.norm();
-  if (!(nn > 0)) return 0;
+  *k1 = *k2 = 0;
+  // At a degenerate point of the parameters (a pole of a sphere made as a B-spline: du vanishes
+  // there to round-off, 5e-16 against |dv| = 17) the fundamental forms' determinant is round-off
+  // too, and the curvature came out 10^15: the size field then asked for its floor round every
+  // pole (a scaled sphere, an ellipsoid of 20 x 10 x 5 semi-axes, at 14,195 tetrahedra for 300
+  // asked). The curvature is continuous there and its limit is reached a millionth of the
+  // parameter range off the pole, so such a point is measured there, towards the box's middle.
+  Vec2 uv = uv0;
+  const Vec2 towards = 0.5 * (uv_min() + uv_max()) - uv0;
+  double nn = 0;
+  for (int step = 0;; ++step) {
+    derivatives(uv, &xu, &xv);
+    nn = xu.cross(xv).norm();
+    if (nn > 1e-9 * (xu.squaredNorm() + xv.squaredNorm())) break;
+    if (step == 3 || !(towards.norm() > 0)) return false;
+    uv = uv0 + std::pow(10.0, step - 6) * towards;
+  }
   second_derivatives(uv, &xuu, &xuv, &xvv);
-  const Vec3 nu = n / nn;
+  const Vec3 nu = xu.cross(xv) / nn;
   // first (E F G) and second (L M N) fundamental forms; the principal curvatures are the
   // eigenvalues of the shape operator I^-1 II
   const double E = xu.dot(xu), F = xu.dot(xv), G = xv.dot(xv);
   const double L = xuu.dot(nu), M = xuv.dot(nu), N = xvv.dot(nu);
   const double det = E * G - F * F;
-  if (!(det > 0)) return 0;
+  if (!(det > 0)) return false;
   const double H = (E * N - 2 * F * M + G * L) / (2 * det);  // mean curvature
   const double K = (L * N - M * M) / det;                    // Gaussian curvature
   const double disc = std::sqrt(std::max(0.0, H * H - K));
-  return std::max(std::abs(H + disc), std::abs(H - disc));
+  *k1 = H - disc, *k2 = H + disc;
+  return true;
+}
+
+double ParametricSurface::max_curvature(const Vec2& uv) const {
+  double k1 = 0, k2 = 0;
+  if (!principal_curvatures(uv, &k1, &k2)) return 0;
+  return std::max(std::abs(k1), std::abs(k2));
 }
 
 Vec2 ParametricSurface::closest_point(const Vec3& p, const Vec2& guess) const {

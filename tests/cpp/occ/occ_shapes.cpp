@@ -2,6 +2,7 @@
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -21,6 +22,7 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_CompSolid.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_GTrsf.hxx>
 
 #include <stdexcept>
 #include <string>
@@ -44,6 +46,14 @@ TopoDS_Shape make_cone() { return BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), g
 TopoDS_Shape make_cylinder() { return BRepPrimAPI_MakeCylinder(1, 2).Shape(); }
 
 TopoDS_Shape make_sphere() { return BRepPrimAPI_MakeSphere(2).Shape(); }
+
+TopoDS_Shape make_ellipsoid() {
+  gp_GTrsf scale;
+  scale.SetValue(1, 1, 2.0), scale.SetValue(2, 2, 1.0), scale.SetValue(3, 3, 0.5);
+  BRepBuilderAPI_GTransform ellipsoid(BRepPrimAPI_MakeSphere(10).Shape(), scale, true);
+  if (!ellipsoid.IsDone()) throw std::runtime_error("the scaled sphere failed");
+  return ellipsoid.Shape();
+}
 
 TopoDS_Shape make_box_minus_cylinder() {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 4, 2).Shape();

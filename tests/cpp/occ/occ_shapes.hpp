@@ -16,6 +16,11 @@ TopoDS_Shape make_cylinder();
 TopoDS_Shape make_cone();
 // radius 2 at the origin: one face, one seam edge and two degenerate pole edges; volume 32 pi / 3
 TopoDS_Shape make_sphere();
+// a sphere of radius 10 scaled by 2, 1 and 0.5 along x, y and z (BRepBuilderAPI_GTransform, as
+// FreeCAD's transformGeometry): an ellipsoid of semi-axes 20, 10, 5 on one B-spline face with
+// degenerate edges at its poles (0, 0, +-5); volume 4000 pi / 3. Its smallest radius of
+// curvature is 1.25, at (+-20, 0, 0).
+TopoDS_Shape make_ellipsoid();
 // the box [0,4] x [0,4] x [0,2] minus a cylinder of radius 1 through it on (2, 2, z): volume 32 - 2 pi
 TopoDS_Shape make_box_minus_cylinder();
 // the boxes [0,1]^3 and [1,2] x [0,1] x [0,1] as a CompSolid sharing the face x = 1 (general fuse)
