@@ -29,14 +29,10 @@ class ParametricSurface {
   virtual Vec2 closest_point(const Vec3& p, const Vec2& guess) const;
   Vec3 normal(const Vec2& uv) const;  // unit, du x dv
   // The largest absolute principal curvature at uv (1 / radius), from the first and second
-  // fundamental forms (principal_curvatures); 0 where the surface is flat, or where the
-  // parametrisation degenerates with no regular point beside it.
+  // fundamental forms; at a degenerate point of the parameters (a pole) the limit beside it; 0
+  // where the surface is flat, or where the parametrisation degenerates with no regular point
+  // beside it.
   double max_curvature(const Vec2& uv) const;
-  // The principal curvatures k1 <= k2 at uv, signed against the unit normal du x dv: a surface
-  // bending away from that normal (a sphere's outside, du x dv outward) has both negative. At a
-  // degenerate point of the parameters (a pole) they are the limit beside it; false, both 0,
-  // where the parametrisation degenerates further.
-  bool principal_curvatures(const Vec2& uv, double* k1, double* k2) const;
 };
 
 class ParametricCurve {

@@ -33,9 +33,8 @@ void ParametricSurface::second_derivatives(const Vec2& uv, Vec3* duu, Vec3* duv,
   *duv = 0.5 * (dvu + (a - c) / (2 * hv));
 }
 
-bool ParametricSurface::principal_curvatures(const Vec2& uv0, double* k1, double* k2) const {
+double ParametricSurface::max_curvature(const Vec2& uv0) const {
   Vec3 xu, xv, xuu, xuv, xvv;
-  *k1 = *k2 = 0;
   // At a degenerate point of the parameters (a pole of a sphere made as a B-spline: du vanishes
   // there to round-off, 5e-16 against |dv| = 17) the fundamental forms' determinant is round-off
   // too, and the curvature came out 10^15: the size field then asked for its floor round every
@@ -49,7 +48,7 @@ bool ParametricSurface::principal_curvatures(const Vec2& uv0, double* k1, double
     derivatives(uv, &xu, &xv);
     nn = xu.cross(xv).norm();
     if (nn > 1e-9 * (xu.squaredNorm() + xv.squaredNorm())) break;
-    if (step == 3 || !(towards.norm() > 0)) return false;
+    if (step == 3 || !(towards.norm() > 0)) return 0;
     uv = uv0 + std::pow(10.0, step - 6) * towards;
   }
   second_derivatives(uv, &xuu, &xuv, &xvv);
@@ -59,18 +58,11 @@ bool ParametricSurface::principal_curvatures(const Vec2& uv0, double* k1, double
   const double E = xu.dot(xu), F = xu.dot(xv), G = xv.dot(xv);
   const double L = xuu.dot(nu), M = xuv.dot(nu), N = xvv.dot(nu);
   const double det = E * G - F * F;
-  if (!(det > 0)) return false;
+  if (!(det > 0)) return 0;
   const double H = (E * N - 2 * F * M + G * L) / (2 * det);  // mean curvature
   const double K = (L * N - M * M) / det;                    // Gaussian curvature
   const double disc = std::sqrt(std::max(0.0, H * H - K));
-  *k1 = H - disc, *k2 = H + disc;
-  return true;
-}
-
-double ParametricSurface::max_curvature(const Vec2& uv) const {
-  double k1 = 0, k2 = 0;
-  if (!principal_curvatures(uv, &k1, &k2)) return 0;
-  return std::max(std::abs(k1), std::abs(k2));
+  return std::max(std::abs(H + disc), std::abs(H - disc));
 }
 
 Vec2 ParametricSurface::closest_point(const Vec3& p, const Vec2& guess) const {

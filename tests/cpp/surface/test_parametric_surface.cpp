@@ -71,35 +71,13 @@ class PolarSphere : public ParametricSurface {
 };
 
 TEST(ParametricSurface, CurvatureAtAPoleIsTheLimitBesideIt) {
-  // at the poles the fundamental forms' determinant is round-off: the curvature came out ~10^15
-  // there, and the size field asked for its smallest elements round every pole
+  // the value at a degenerate point of the parameters, and beside it. (This analytic sphere's
+  // differences straddle the pole evenly and its curvature came out right there before too; the
+  // B-spline sphere's, which came out at 10^15, is BrepPoles' test.)
   const PolarSphere sphere(2.0);
-  for (const Vec2& pole : {Vec2(0.4, M_PI / 2), Vec2(3.0, -M_PI / 2), Vec2(0, M_PI / 2)}) {
+  for (const Vec2& pole : {Vec2(0.4, M_PI / 2), Vec2(3.0, -M_PI / 2), Vec2(0, M_PI / 2)})
     EXPECT_NEAR(sphere.max_curvature(pole), 0.5, 1e-6) << pole.transpose();
-    double k1 = 0, k2 = 0;
-    ASSERT_TRUE(sphere.principal_curvatures(pole, &k1, &k2));
-    EXPECT_NEAR(k1, -0.5, 1e-6);  // du x dv points outward: the sphere bends away from it
-    EXPECT_NEAR(k2, -0.5, 1e-6);
-  }
   EXPECT_NEAR(sphere.max_curvature(Vec2(1.0, 0.3)), 0.5, 1e-6);
-}
-
-TEST(ParametricSurface, PrincipalCurvaturesAreSignedAgainstTheNormal) {
-  const surface::CylinderSurface cyl(2.0, M_PI, 3.0);
-  double k1 = 0, k2 = 0;
-  ASSERT_TRUE(cyl.principal_curvatures(Vec2(0.3, 0.6), &k1, &k2));
-  EXPECT_LE(k1, k2);
-  // one flat direction (along the axis), one of radius 2, either sign as du x dv turns
-  EXPECT_NEAR(std::min(std::abs(k1), std::abs(k2)), 0.0, 1e-6);
-  EXPECT_NEAR(std::max(std::abs(k1), std::abs(k2)), 0.5, 1e-6);
-  const Vec3 n = cyl.normal(Vec2(0.3, 0.6)), x = cyl.point(Vec2(0.3, 0.6));
-  const Vec3 outward(x.x(), x.y(), 0);
-  // bending away from du x dv when it points outward (a convex side), towards it when inward
-  EXPECT_NEAR(n.dot(outward) > 0 ? k1 : k2, n.dot(outward) > 0 ? -0.5 : 0.5, 1e-6);
-  const surface::PlaneSurface plane(Vec3::Zero(), Vec3(1, 2, 0), Vec3(0, 1, 3));
-  ASSERT_TRUE(plane.principal_curvatures(Vec2(0.2, 0.9), &k1, &k2));
-  EXPECT_NEAR(k1, 0.0, 1e-9);
-  EXPECT_NEAR(k2, 0.0, 1e-9);
 }
 
 TEST(ParametricSurface, ClosestPointOnAPeriodicParameterStaysNearTheGuess) {
