@@ -8,7 +8,8 @@ Run on demand (not a pass/fail test), with FreeCAD's interpreter:
 (freecadcmd opens its arguments as documents: BISECT_PICTURE=OUT.png picks another picture,
 BISECT_SHAPE another shape: box-hole (the default), tube (FreeCAD's constraint_transform_torque,
 radius 5, wall 1, length 50, at its shipped 2,869 tetrahedra asked: the wall caps the size) or
-plate (50 x 20 x 1 at 500 asked).)
+plate (50 x 20 x 1 at 500 asked) or frustum (Part.makeCone(10, 3, 30) at 3,000 asked: a full
+conical side whose seam has proxy nodes along it).)
 Gmsh's CharacteristicLengthMax is searched until its count is within 10% of BisectMesh's.
 """
 
@@ -52,6 +53,7 @@ SHAPES = {
     "box-hole": (box_with_hole_and_fillets, ELEMENTS, 4.0, "box-hole-fillets.png"),
     "tube": (tube, 2869, 1.5, "thin-tube.png"),
     "plate": (lambda: Part.makeBox(50, 20, 1), 500, 1.0, "thin-plate.png"),
+    "frustum": (lambda: Part.makeCone(10, 3, 30), 3000, 2.4, "frustum.png"),
 }
 
 

@@ -80,9 +80,14 @@ std::vector<std::vector<DirEdge>> chain_loops(const BrepBoundary& bd, const Para
       if (options > 1) {
         const Vec3 n = last.normal.normalized(), r = X[last.a] - X[last.b];
         double least = 1e300;
-        if (home) least = clockwise(r, X[first.b] - X[first.a], n), close = true;
+        // Going back the way it came (along the same model edge, a seam's other side) is the
+        // last choice: its direction is the one it came by, which the clockwise angle would put
+        // at 0 or at 2 pi by the sign of a round-off (a frustum's side chained as two loops, each
+        // crossing the seam at a node on it, and was meshed on the facets' planes)
+        auto turn = [&](const DirEdge& e) { return e.b == last.a ? 2 * M_PI : clockwise(r, X[e.b] - X[e.a], n); };
+        if (home) least = turn(first), close = true;
         for (auto c = range.first; c != range.second; ++c) {
-          const double ang = clockwise(r, X[c->second.b] - X[c->second.a], n);
+          const double ang = turn(c->second);
           if (ang < least) least = ang, best = c, close = false;
         }
       }

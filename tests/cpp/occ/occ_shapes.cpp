@@ -43,6 +43,8 @@ TopoDS_Shape make_touching_compound() {
 
 TopoDS_Shape make_cone() { return BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 100, 0, 300, 2 * M_PI).Shape(); }
 
+TopoDS_Shape make_frustum() { return BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10, 3, 30, 2 * M_PI).Shape(); }
+
 TopoDS_Shape make_cylinder() { return BRepPrimAPI_MakeCylinder(1, 2).Shape(); }
 
 TopoDS_Shape make_sphere() { return BRepPrimAPI_MakeSphere(2).Shape(); }

@@ -14,6 +14,9 @@ TopoDS_Shape make_cylinder();
 // radius 100 at z = 0 to the apex at (0, 0, 300), as FreeCAD's Part.makeCone(100, 0, 300) makes
 // it: a conical face with a seam and a degenerate edge at the apex, a disc; volume pi * 10^6
 TopoDS_Shape make_cone();
+// a frustum, radius 10 at z = 0 to radius 3 at z = 30, as FreeCAD's Part.makeCone(10, 3, 30): a
+// conical face with a seam, two discs; volume 30 pi (100 + 30 + 9) / 3 = 1390 pi
+TopoDS_Shape make_frustum();
 // radius 2 at the origin: one face, one seam edge and two degenerate pole edges; volume 32 pi / 3
 TopoDS_Shape make_sphere();
 // a sphere of radius 10 scaled by 2, 1 and 0.5 along x, y and z (BRepBuilderAPI_GTransform, as
