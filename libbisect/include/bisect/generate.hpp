@@ -122,6 +122,11 @@ struct GenerateStats {
   // whose curved boundary edge had to be made straight to keep the Jacobian positive
   double surface_min_angle = 0;
   std::int64_t straightened_edges = 0;
+  // B-rep route: face pieces whose grid is made on the proxy facets' planes and mapped onto the
+  // surface, the last resort when no chart of the surface takes the piece's boundary (its nodes
+  // still lie on the face; the facets' edges show in the grid). 0 when every piece was meshed on
+  // its true surface.
+  std::int64_t facet_pieces = 0;
   std::int64_t proxy_cells = 0;  // cells filled in the proxy's geometry (proxy_fill.hpp)
   std::int64_t joined_cells = 0; // cells joined with a neighbour to be seen whole (brep_cells.hpp)
   std::int64_t recovered_cells = 0; // cells filled by Delaunay boundary recovery (tet/recovery_fill.hpp)

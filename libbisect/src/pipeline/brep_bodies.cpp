@@ -129,7 +129,7 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
     done += share;
     total.convex_cells += st.convex_cells, total.helper_nodes += st.helper_nodes, total.helpers_removed += st.helpers_removed;
     total.skipped_nodes += st.skipped_nodes, total.flips += st.flips, total.sliver_moves += st.sliver_moves;
-    total.surface_moves += st.surface_moves, total.surface_flips += st.surface_flips;
+    total.surface_moves += st.surface_moves, total.surface_flips += st.surface_flips, total.facet_pieces += st.facet_pieces;
     total.mean_changes += st.mean_changes;
     total.fillings += st.fillings, total.graded_nodes += st.graded_nodes, total.straightened_edges += st.straightened_edges;
     total.proxy_cells += st.proxy_cells, total.joined_cells += st.joined_cells, total.recovered_cells += st.recovered_cells;

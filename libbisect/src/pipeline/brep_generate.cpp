@@ -357,6 +357,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
     }
   follow_slid_nodes(in, before, best);
   st->surface_min_angle = best->grids.min_angle_deg;
+  st->facet_pieces = best->grids.facet_pieces;
   st->optimize_parts = oc.times;
   st->flips += oc.flips;
   st->sliver_moves = oc.sliver_moves;

@@ -146,6 +146,7 @@ BrepGrids mesh_brep_faces(BrepBoundary& bd, const Decomposition& d, const size::
           if (k < jobs.size()) {
             FacePiece& piece = g.pieces[k];
             piece.face = jobs[k].face, piece.cell_out = jobs[k].cell_out, piece.cell_in = jobs[k].cell_in;
+            if (mk.on_facets) ++g.facet_pieces;
             for (std::size_t i = 0; i < tris.size(); ++i) {
               piece.tris.push_back(tris[i]);
               piece.tri_uv.push_back({mk.uv[mk.tris[i][0]], mk.uv[mk.tris[i][1]], mk.uv[mk.tris[i][2]]});

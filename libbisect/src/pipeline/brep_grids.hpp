@@ -37,6 +37,7 @@ struct BrepGrids {
   // per model face that is a cut face (source < 0): triangles counter-clockwise around its normal
   std::vector<std::vector<std::array<Index, 3>>> cut_tris;
   double min_angle_deg = 180;  // over the face pieces' triangles, in 3D
+  std::int64_t facet_pieces = 0;  // pieces meshed on their proxy facets' planes (mesh_piece's last resort)
 };
 
 // Meshes every face piece and cut face of the decomposition at the sizes of h, on `threads`

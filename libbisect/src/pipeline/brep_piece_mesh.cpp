@@ -176,6 +176,7 @@ Made mesh_piece_on_facets(const BrepBoundary& bd, const PieceJob& job, const siz
     }
     for (const auto& t : rm.tris) out.tris.push_back({id[t[0]], id[t[1]], id[t[2]]});
   }
+  out.on_facets = true;
   return out;
 }
 
@@ -302,10 +303,20 @@ Made mesh_piece(const BrepBoundary& bd, const PieceJob& job, const size::SizeFie
     try {
       rm = checked(at_pole ? surface::mesh_region(surf, rb, ro) : surface::mesh_region_projected(surf, rb, ro));
     } catch (const MeshingError& second) {
+      // in (u, v) once more, its boundary first triangulated in the surface's metric (a fold in
+      // (u, v) where the parameters are far from proportional to length: corpus Cone_1,
+      // Kurbelwelle, x_t20_data and the scaled sphere sent pieces to their facets so), then the
+      // facets' planes
+      surface::RegionMeshOptions again = ro;
+      again.boundary_in_surface_metric = true;
       try {
-        return mesh_piece_on_facets(bd, job, h, cancelled);
+        rm = checked(surface::mesh_region(surf, rb, again));
       } catch (const MeshingError&) {
-        throw MeshingError(where + ": " + (at_pole ? second : first).what());
+        try {
+          return mesh_piece_on_facets(bd, job, h, cancelled);
+        } catch (const MeshingError&) {
+          throw MeshingError(where + ": " + (at_pole ? second : first).what());
+        }
       }
     }
   }

@@ -36,6 +36,7 @@ struct Made {
   std::vector<Vec2> uv;  // per local node
   std::vector<std::array<Index, 3>> tris;
   std::string error;  // the mesher's failure, when it failed
+  bool on_facets = false;  // a face piece meshed on its proxy facets' planes (the last resort)
 };
 
 // The piece on its B-rep face's true surface (thesis ch. 5): its loops chained from the model

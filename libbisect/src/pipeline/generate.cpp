@@ -162,7 +162,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes << ", \"surface_moves\": " << s.surface_moves << ", \"surface_flips\": " << s.surface_flips
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
-    << ", \"straightened_edges\": " << s.straightened_edges << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
+    << ", \"straightened_edges\": " << s.straightened_edges << ", \"facet_pieces\": " << s.facet_pieces << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
     << ", \"refilled_folds\": " << s.refilled_folds << ", \"optimize_blocks\": " << s.optimize_blocks << ", \"proxy_attempts\": " << s.proxy_attempts << ", \"placements\": " << s.placements
     << ", \"proxy_retry_reason\": " << json_string(s.proxy_retry_reason) << ", \"face_corner_retry\": " << (s.face_corner_retry ? "true" : "false")
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes

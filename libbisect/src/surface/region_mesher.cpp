@@ -134,6 +134,21 @@ class Mesher {
       }
   }
 
+  // RegionMeshOptions::boundary_in_surface_metric's metric: the square root of the first
+  // fundamental form averaged over the boundary nodes (made definite as metric_root does).
+  Eigen::Matrix2d boundary_metric() const {
+    Eigen::Matrix2d mean = Eigen::Matrix2d::Zero();
+    for (const Vec2& uv : b_.uv) {
+      Vec3 du, dv;
+      s_.derivatives(uv, &du, &dv);
+      Eigen::Matrix2d M;
+      M << du.dot(du), du.dot(dv), du.dot(dv), dv.dot(dv);
+      if (M.allFinite()) mean += M;
+    }
+    mean += 1e-6 * std::max(mean.trace(), 1e-300) * Eigen::Matrix2d::Identity();
+    return Eigen::LLT<Eigen::Matrix2d>(mean).matrixL().transpose();
+  }
+
   void triangulate_boundary() {
     nb_ = b_.uv.size();
     Vec2 lo = b_.uv[0], hi = b_.uv[0];
@@ -149,12 +164,12 @@ class Mesher {
     tr_.grow(tr_.uv.size());
     std::vector<char> done(nb_, 0);
     Index last = 0;
-    const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d metric = o_.boundary_in_surface_metric ? boundary_metric() : Eigen::Matrix2d(Eigen::Matrix2d::Identity());
     for (const auto& loop : b_.loops)
       for (Index v : loop) {
         if (done[v]) continue;
         done[v] = 1;
-        const Index t = tr_.insert(tp(v), last, identity);
+        const Index t = tr_.insert(tp(v), last, metric);
         if (t < 0)
           throw MeshingError("surface region: boundary node " + std::to_string(v + 1) + " at (u, v) = (" + std::to_string(b_.uv[v].x()) + ", " +
                              std::to_string(b_.uv[v].y()) + ") falls on another node or edge (loops that touch or cross)");

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -45,10 +46,19 @@ const std::map<std::string, double> kSmallestDihedral = {
     {"x_as1_tu_203.brep", 7.0},                 // (8.85)
     {"x_cube_sphere_cube_compound.brep", 14.5}, // (18.08)
     {"x_full_sphere.brep", 15.0},               // (19.17)
-    {"x_problemSphere.brep", 1.9},              // (2.43)
+    {"x_problemSphere.brep", 8.0},              // (10.30; 2.43 until a seam's loop was chained right)
     {"x_ring.brep", 8.0},                       // (10.01)
     {"x_rod.brep", 5.2},                        // (6.50)
     {"x_t20_data.brep", 1.9},                   // (2.41)
+};
+
+// file -> the face pieces it may mesh on their proxy facets' planes (GenerateStats::facet_pieces;
+// every other shape: none). Cone_1's apex piece folds onto itself in (u, v) and is too curved for
+// a plane (test_brep_apex.cpp). Kurbelwelle's two pieces of Face5 and Face6 went there until a
+// piece whose (u, v) grid folds over in 3D got a third try, its boundary triangulated in the
+// surface's metric (surface/region_mesher.hpp).
+const std::map<std::string, std::int64_t> kFacetPieces = {
+    {"Cone_1.brep", 1},
 };
 
 std::vector<std::string> corpus() {
@@ -85,6 +95,8 @@ TEST_P(Corpus, MeshesOrIsRefusedNamingTheFace) {
     const auto bound = kSmallestDihedral.find(file);
     ASSERT_TRUE(bound != kSmallestDihedral.end()) << file << ": give it a bound in kSmallestDihedral";
     EXPECT_GE(q.dihedral_min.min, bound->second) << file;
+    const auto facets = kFacetPieces.find(file);
+    EXPECT_LE(st.facet_pieces, facets == kFacetPieces.end() ? 0 : facets->second) << file << ": pieces meshed on the proxy's facets";
     std::printf("[ corpus   ] %-34s %7zu tets (floor: %s), min dihedral %5.2f, mean alpha %.3f, %.1f s\n", file.c_str(), m.num_tets(),
                 st.count_floor_reason.empty() ? "none" : st.count_floor_reason.c_str(), q.dihedral_min.min, q.alpha.mean, seconds);
   } catch (const Cancelled&) {
