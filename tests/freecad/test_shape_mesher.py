@@ -224,6 +224,31 @@ class ShapeMesherTest(unittest.TestCase):
         # by default the bound is what half of the memory holds: far above this sheet at 500
         self.assertGreater(shape_mesher.arguments.element_limit(), 1e5)
 
+    def test_cones_and_swept_tubes_are_meshed_on_their_surfaces(self):
+        # Part.makeCone(10, 3, 30): its side's seam has proxy nodes along it, where a face piece's
+        # loop once took the seam's other side back and the side went to the proxy's facets
+        # (surface triangles of 10.3 degrees, dihedral 6.4; now 30.2 and 24.2). A tube bent by
+        # makePipeShell (radii 4 and 3 on a line, a quarter circle of radius 15 and a line):
+        # cylinders and a torus, one piece per cell
+        V = FreeCAD.Vector
+        path = Part.Wire([Part.makeLine(V(0, 0, 0), V(0, 0, 30)),
+                          Part.Arc(V(0, 0, 30), V(15 - 15 * 0.5 ** 0.5, 0, 30 + 15 * 0.5 ** 0.5), V(15, 0, 45)).toShape(),
+                          Part.makeLine(V(15, 0, 45), V(45, 0, 45))])
+        def pipe(radius):
+            return path.makePipeShell([Part.Wire(Part.makeCircle(radius, V(0, 0, 0), V(0, 0, 1)))], True, True)
+        tube = pipe(4).cut(pipe(3)).Solids[0]
+        for name, shape, surface_angle, dihedral in (("frustum", Part.makeCone(10, 3, 30), 25.0, 15.0), ("tube", tube, 18.0, 10.0)):
+            info = {}
+            mesh = shape_mesher.mesh_shape(shape, elements=3000, order=2, report=info)
+            report = bisectmesh.quality(mesh)
+            self.assertTrue(report["valid"], (name, report.get("violations")))
+            stats = info["stats"]
+            self.assertEqual(stats["facet_pieces"], 0, name)
+            # measured: frustum 30.2 and 24.2 degrees, tube 21.1 and 12.8
+            self.assertGreaterEqual(stats["surface_min_angle"], surface_angle, name)
+            self.assertGreaterEqual(stats["quality"]["dihedral_min"], dihedral, name)
+            self.assertAlmostEqual(mesh_volume(mesh) / shape.Volume, 1, delta=0.01, msg=name)
+
 
 if __name__ == "__main__":
     unittest.main()
