@@ -39,18 +39,26 @@ constexpr double kNearSegment = 0.1;
 constexpr double kShortGrowth = 1.0;
 constexpr double kShortFloor = 0.1;
 
-// T with |T du|^2 = du^T (J^T J) du: the surface's first fundamental form at uv, made definite
-// where it degenerates (a pole) by a small multiple of its trace.
-Eigen::Matrix2d metric_root(const ParametricSurface& s, const Vec2& uv) {
+// The surface's first fundamental form J^T J at uv.
+Eigen::Matrix2d first_fundamental_form(const ParametricSurface& s, const Vec2& uv) {
   Vec3 du, dv;
   s.derivatives(uv, &du, &dv);
   Eigen::Matrix2d M;
   M << du.dot(du), du.dot(dv), du.dot(dv), dv.dot(dv);
+  return M;
+}
+
+// T with |T du|^2 = du^T M du, M made definite where it degenerates (a pole) by a small
+// multiple of its trace.
+Eigen::Matrix2d definite_root(Eigen::Matrix2d M) {
   const double tr = std::max(M.trace(), 1e-300);
   M += 1e-6 * tr * Eigen::Matrix2d::Identity();
   const Eigen::LLT<Eigen::Matrix2d> llt(M);
   return llt.matrixL().transpose();
 }
+
+// T with |T du|^2 = du^T (J^T J) du: the root of the first fundamental form at uv.
+Eigen::Matrix2d metric_root(const ParametricSurface& s, const Vec2& uv) { return definite_root(first_fundamental_form(s, uv)); }
 
 // The circumcentre of a, b, c under the linear map T, in the original coordinates.
 bool metric_circumcentre(const Vec2& a, const Vec2& b, const Vec2& c, const Eigen::Matrix2d& T, Vec2* out) {
@@ -134,19 +142,15 @@ class Mesher {
       }
   }
 
-  // RegionMeshOptions::boundary_in_surface_metric's metric: the square root of the first
-  // fundamental form averaged over the boundary nodes (made definite as metric_root does).
+  // RegionMeshOptions::boundary_in_surface_metric's metric: the root of the first fundamental
+  // form summed over the boundary nodes (its scale does not matter to the Delaunay test).
   Eigen::Matrix2d boundary_metric() const {
-    Eigen::Matrix2d mean = Eigen::Matrix2d::Zero();
+    Eigen::Matrix2d sum = Eigen::Matrix2d::Zero();
     for (const Vec2& uv : b_.uv) {
-      Vec3 du, dv;
-      s_.derivatives(uv, &du, &dv);
-      Eigen::Matrix2d M;
-      M << du.dot(du), du.dot(dv), du.dot(dv), dv.dot(dv);
-      if (M.allFinite()) mean += M;
+      const Eigen::Matrix2d M = first_fundamental_form(s_, uv);
+      if (M.allFinite()) sum += M;
     }
-    mean += 1e-6 * std::max(mean.trace(), 1e-300) * Eigen::Matrix2d::Identity();
-    return Eigen::LLT<Eigen::Matrix2d>(mean).matrixL().transpose();
+    return definite_root(sum);
   }
 
   void triangulate_boundary() {
