@@ -9,7 +9,9 @@ Run on demand (not a pass/fail test), with FreeCAD's interpreter:
 BISECT_SHAPE another shape: box-hole (the default), tube (FreeCAD's constraint_transform_torque,
 radius 5, wall 1, length 50, at its shipped 2,869 tetrahedra asked: the wall caps the size) or
 plate (50 x 20 x 1 at 500 asked) or frustum (Part.makeCone(10, 3, 30) at 3,000 asked: a full
-conical side whose seam has proxy nodes along it).)
+conical side whose seam has proxy nodes along it) or spring (a circle of radius 3 swept along a
+helix of radius 15, pitch 20 and height 60 by makePipeShell, at 30,000 asked: a B-spline face
+whose proxy the linear deflection governed).)
 Gmsh's CharacteristicLengthMax is searched until its count is within 10% of BisectMesh's.
 """
 
@@ -44,6 +46,18 @@ def box_with_hole_and_fillets():
     return box.cut(Part.makeCylinder(8, 20, FreeCAD.Vector(30, 20, 0)))
 
 
+def spring():
+    helix = Part.makeHelix(20, 60, 15)
+    edge = helix.Edges[0]
+    start = edge.FirstParameter
+    sweep = Part.BRepOffsetAPI.MakePipeShell(helix)
+    sweep.setFrenetMode(True)
+    sweep.add(Part.Wire([Part.makeCircle(3, edge.valueAt(start), edge.tangentAt(start))]))
+    sweep.build()
+    sweep.makeSolid()
+    return sweep.shape()
+
+
 def tube():
     return Part.makeCylinder(5, 50).cut(Part.makeCylinder(4, 50))
 
@@ -54,6 +68,7 @@ SHAPES = {
     "tube": (tube, 2869, 1.5, "thin-tube.png"),
     "plate": (lambda: Part.makeBox(50, 20, 1), 500, 1.0, "thin-plate.png"),
     "frustum": (lambda: Part.makeCone(10, 3, 30), 3000, 2.4, "frustum.png"),
+    "spring": (spring, 30000, 1.5, "spring.png"),
 }
 
 

@@ -186,17 +186,30 @@ double proxy_angle(const SizeOptions& o) {
 }
 
 // The proxy and its decomposition. A proxy whose facets cross (a thin wall between two curved
-// faces tessellated coarsely) is made again finer, up to three times.
+// faces tessellated coarsely) is made again finer, up to three times. With keep_angle, the first
+// proxy is made again at the linear deflection that keeps the angle on every curved face
+// (pipeline::angle_keeping_deflection), when that is finer by more than a third.
 struct Decomposed {
   pipeline::BrepProxy proxy;
   Decomposition d;
+  bool angle_kept = true;  // the first proxy kept the angle on every curved face
 };
-Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, double angle, const std::function<bool(double)>& progress) {
+Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, double angle, bool keep_angle,
+                          const std::function<bool(double)>& progress) {
   const double diag = (in.bbox_max - in.bbox_min).norm();
   double linear = 0.05 * diag;
   for (int attempt = 0;; ++attempt) {
     Decomposed out;
     out.proxy = pipeline::make_proxy(in, linear, angle);
+    if (attempt == 0) {
+      // no finer than a thousandth of the diagonal
+      const double keeping = std::max(pipeline::angle_keeping_deflection(in, out.proxy), 1e-3 * diag);
+      out.angle_kept = keeping >= 0.7 * linear;
+      if (keep_angle && !out.angle_kept) {
+        linear = keeping;
+        out.proxy = pipeline::make_proxy(in, linear, angle);
+      }
+    }
     DecomposeOptions dopt = opt.decompose;
     if (progress) dopt.progress = progress;
     dopt.split_size = opt.sizing.size, dopt.split_elements = static_cast<double>(opt.sizing.elements);
@@ -428,6 +441,15 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
   // makes positive, sends the route on to the next proxy too (corpus/Cone_1.brep at order 2
   // meshes so: its first proxy leaves a nearly flat tetrahedron at the apex).
   constexpr int kProxyAttempts = 3;  // the proxy's angle, a half and a third of it
+  // When all three fail and the first proxy's linear deflection, not its angle, governed a curved
+  // face (a B-spline face curved tighter than a twentieth of the shape's diagonal), one more at
+  // the first angle and the deflection that keeps it there (decompose_brep's keep_angle). Only
+  // then: made so from the start, corpus/x_ring.brep, whose second proxy meshes at 10.7 degrees,
+  // came out at 3.6 on its first (728 cells instead of 356), and wrenchnut's three finer proxies
+  // took 18 to 34 s each where the coarse ones took 3 (and still failed). A helical spring's
+  // (a 3 mm wire round a helix of radius 15: its proxy at 4.9 mm held 62% of its volume) meshes
+  // on it.
+  bool keep_angle = false, angle_kept = true;
   // The walls' cap (size/wall_thickness.hpp) makes finer grids beside curved faces, which can
   // leave a cell that none of the fills above takes (FreeCAD's constraint_tie at 6,044); when
   // the first two proxies have failed with it, the attempts start again without it, so that the
@@ -454,7 +476,8 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     const auto t_dec = Clock::now();
     std::function<bool(double)> dec_progress;
     if (progress) dec_progress = [&](double x) { return progress(kBar.decomposed * x); };
-    const Decomposed dc = decompose_brep(in, opt, angle, dec_progress);
+    const Decomposed dc = decompose_brep(in, opt, angle, keep_angle, dec_progress);
+    if (!keep_angle && attempt == 0) angle_kept = dc.angle_kept;
     st.init_geom = dc.d.stats.prepare_seconds;
     st.bisect = since(t_dec) - st.init_geom;
     st.convex_cells = static_cast<std::int64_t>(dc.d.cells.size());
@@ -568,8 +591,9 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
       break;
     } catch (const MeshingError& e) {
       if (first_error.empty()) first_error = e.what();
-      if (use_walls && walls_found && attempt >= 1 && !filled_cells) use_walls = false, attempt = -1;
-      else if (attempt >= kProxyAttempts - 1) throw MeshingError(first_error);
+      if (use_walls && walls_found && attempt >= 1 && !filled_cells && !keep_angle) use_walls = false, attempt = -1;
+      else if (keep_angle || (attempt >= kProxyAttempts - 1 && angle_kept)) throw MeshingError(first_error);
+      else if (attempt >= kProxyAttempts - 1) keep_angle = true, attempt = -1;
       const double total = st.total;
       const std::int64_t tried = st.proxy_attempts + 1, placements = st.placements;
       st = GenerateStats{};

@@ -205,4 +205,25 @@ BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
   return px;
 }
 
+double angle_keeping_deflection(const BrepInput& in, const BrepProxy& px) {
+  double linear = px.linear;
+  const double keep = 1 - std::cos(0.5 * px.angular);
+  for (std::size_t f = 0; f < in.faces.size() && f < px.tess.faces.size(); ++f) {
+    if (in.faces[f].planar || !in.faces[f].surface) continue;
+    const ParametricSurface& s = *in.faces[f].surface;
+    const BrepTessellation::Face& face = px.tess.faces[f];
+    for (std::size_t k = 0; k < face.tris.size(); ++k) {
+      const auto& t = face.tris[k];
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+      const double kappa = s.max_curvature((face.uv[k][0] + face.uv[k][1] + face.uv[k][2]) / 3);
+      if (!(kappa > 0) || !std::isfinite(kappa)) continue;
+      const double height = keep / kappa;
+      // a centroid lies nearer the surface than the chord's middle does (a cylinder's facet
+      // across the angle: 0.88 of the chord height at 60 degrees): past it, the angle was not kept
+      if (height < linear && deviation(s, px.tess.nodes, t, face.uv[k]) > height) linear = height;
+    }
+  }
+  return linear;
+}
+
 }  // namespace bisect::pipeline

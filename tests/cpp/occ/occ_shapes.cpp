@@ -10,6 +10,7 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
@@ -104,6 +105,11 @@ TopoDS_Shape make_box_with_cavity() {
 
 TopoDS_Shape make_nurbs_part() {
   BRepBuilderAPI_NurbsConvert convert(make_box_minus_cylinder());
+  return convert.Shape();
+}
+
+TopoDS_Shape make_nurbs_torus() {
+  BRepBuilderAPI_NurbsConvert convert(BRepPrimAPI_MakeTorus(15, 3).Shape());
   return convert.Shape();
 }
 

@@ -40,6 +40,10 @@ TopoDS_Shape make_sphere_in_box();
 TopoDS_Shape make_touching_compound();
 // make_box_minus_cylinder with every surface and curve converted to B-splines
 TopoDS_Shape make_nurbs_part();
+// a torus of radii 15 and 3 about the z axis, its surface and curves converted to B-splines
+// (BRepMesh tessellates such a face by its linear deflection as much as by its angle): volume
+// 2 pi^2 15 3^2
+TopoDS_Shape make_nurbs_torus();
 // a B-spline profile revolved half a turn about the z axis: surfaces of revolution over a
 // B-spline curve (whose adaptors nest a curve adaptor with its own cache)
 TopoDS_Shape make_revolved_bspline();
