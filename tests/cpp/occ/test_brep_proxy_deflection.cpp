@@ -17,7 +17,7 @@ namespace bisect {
 namespace {
 
 // the volume the proxy's faces enclose (each face a fan from its first node, all of them turned
-// the same way, as the triangles of the tessellation are; the rod's faces have no holes)
+// the same way, as the triangles of the tessellation are; the torus has no planar face)
 double proxy_volume(const pipeline::BrepProxy& px) {
   double v = 0;
   for (const PolyFace& f : px.input.faces)
