@@ -35,6 +35,9 @@ if os.path.isdir(BUILD_MOD):
 import bisectmesh  # noqa: E402
 from bisectmesh import shape_mesher  # noqa: E402
 
+sys.path.insert(0, os.path.join(ROOT, "tests", "freecad"))
+from fc_helpers import helical_spring  # noqa: E402
+
 ELEMENTS = 5000
 
 
@@ -44,18 +47,6 @@ def box_with_hole_and_fillets():
     vertical = [e for e in box.Edges if abs(e.Vertexes[0].Point.z - e.Vertexes[1].Point.z) > 1]
     box = box.makeFillet(5, vertical)
     return box.cut(Part.makeCylinder(8, 20, FreeCAD.Vector(30, 20, 0)))
-
-
-def spring():
-    helix = Part.makeHelix(20, 60, 15)
-    edge = helix.Edges[0]
-    start = edge.FirstParameter
-    sweep = Part.BRepOffsetAPI.MakePipeShell(helix)
-    sweep.setFrenetMode(True)
-    sweep.add(Part.Wire([Part.makeCircle(3, edge.valueAt(start), edge.tangentAt(start))]))
-    sweep.build()
-    sweep.makeSolid()
-    return sweep.shape()
 
 
 def tube():
@@ -68,7 +59,7 @@ SHAPES = {
     "tube": (tube, 2869, 1.5, "thin-tube.png"),
     "plate": (lambda: Part.makeBox(50, 20, 1), 500, 1.0, "thin-plate.png"),
     "frustum": (lambda: Part.makeCone(10, 3, 30), 3000, 2.4, "frustum.png"),
-    "spring": (spring, 30000, 1.5, "spring.png"),
+    "spring": (helical_spring, 30000, 1.5, "spring.png"),
 }
 
 

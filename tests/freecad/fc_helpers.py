@@ -34,6 +34,22 @@ def box_minus_cylinder(doc, name="BoxMinusCylinder"):
     return obj
 
 
+def helical_spring(wire=3, radius=15, pitch=20, height=60):
+    """A circle of radius `wire` swept by makePipeShell (Frenet) along a helix: one B-spline face
+    and two end discs."""
+    import Part
+
+    helix = Part.makeHelix(pitch, height, radius)
+    edge = helix.Edges[0]
+    start = edge.FirstParameter
+    sweep = Part.BRepOffsetAPI.MakePipeShell(helix)
+    sweep.setFrenetMode(True)
+    sweep.add(Part.Wire([Part.makeCircle(wire, edge.valueAt(start), edge.tangentAt(start))]))
+    sweep.build()
+    sweep.makeSolid()
+    return sweep.shape()
+
+
 def gmsh_mesh(doc, part, order=1, size=3.0, name=None):
     """Meshes ``part`` with FreeCAD's Gmsh mesher (femmesh.gmshtools), as a FEM user would."""
     import ObjectsFem

@@ -12,6 +12,7 @@ import BOPTools.SplitAPI
 
 import bisectmesh
 from bisectmesh import shape_mesher
+from fc_helpers import helical_spring
 
 
 def group(mesh, name):
@@ -254,14 +255,7 @@ class ShapeMesherTest(unittest.TestCase):
         # B-spline face, whose proxy at the shape's linear deflection (4.9 mm) held 62% of its
         # volume; its three proxies failed in the cell fill and the spring was refused. Now a fourth,
         # at the deflection that keeps the proxy's angle on that face, meshes it
-        helix = Part.makeHelix(20, 60, 15)
-        edge = helix.Edges[0]
-        sweep = Part.BRepOffsetAPI.MakePipeShell(helix)
-        sweep.setFrenetMode(True)
-        sweep.add(Part.Wire([Part.makeCircle(3, edge.valueAt(edge.FirstParameter), edge.tangentAt(edge.FirstParameter))]))
-        sweep.build()
-        sweep.makeSolid()
-        spring = sweep.shape()
+        spring = helical_spring()
         info = {}
         mesh = shape_mesher.mesh_shape(spring, elements=3000, order=2, report=info)
         report = bisectmesh.quality(mesh)
