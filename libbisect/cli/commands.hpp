@@ -41,6 +41,7 @@ struct MeshOptions {
   int order = 1;              // --order 1|2
   bool boundary_flips = false;  // --boundary-flips: the 2-2 transformation on the outer boundary
   bool face_moves = true;       // --no-face-moves: false
+  bool quality_floor = true;    // --no-quality-floor: false
   double grading = 0;         // --grading G (0: uniform interior spacing)
   // the B-rep size field (SizeOptions): --min-size, --max-size, --curvature-elements,
   // --chord-deviation, --size-grading; brep_sizing lists the flags given, so that a polyhedral

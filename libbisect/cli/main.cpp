@@ -56,6 +56,8 @@ const char* kUsage =
     "                  those, keeping every smallest angle (default 2)\n"
     "  --no-face-moves  in those rounds, keep the nodes inside input faces where the face\n"
     "                  grids put them (by default they may move within their face)\n"
+    "  --no-quality-floor  keep the count R asks even when its elements miss the quality bars\n"
+    "                  (polyhedral inputs, R up to 5000: by default up to 4 R are used)\n"
     "  --threads N     threads for the face grids, the cells' nodes and fillings and the\n"
     "                  optimisation (default 0: one per core); the mesh is the same for\n"
     "                  every N\n"
@@ -211,6 +213,8 @@ int main(int argc, char** argv) {
       mesh.boundary_flips = true;
     } else if (a == "--no-face-moves") {
       mesh.face_moves = false;
+    } else if (a == "--no-quality-floor") {
+      mesh.quality_floor = false;
     } else if (a == "--order") {
       std::string v;
       if (!value(&v) || (v != "1" && v != "2")) return usage_error(a + " needs 1 or 2");

@@ -105,6 +105,7 @@ int run_mesh(const std::string& input, const MeshOptions& opt, std::ostream& out
     go.order = opt.order;
     go.optimize.boundary_flips = opt.boundary_flips;
     go.optimize.face_moves = opt.face_moves;
+    go.quality_floor = opt.quality_floor;
     go.sizing.grading = opt.grading;
     go.sizing.min_size = opt.min_size;
     go.sizing.max_size = opt.max_size;

@@ -283,7 +283,7 @@ PYBIND11_MODULE(_core, m) {
       "nodes (N, 3); faces: node index lists (planar polygons) or {'nodes': [...], 'hole_of': k}; regions: face "
       "index lists or {'faces': [...], 'cavity': bool}; all numbered from 0. Options as keywords (default_options() "
       "lists them with their defaults): elements (R) or size, order, optimize, smooth, slivers, grading, "
-      "boundary_flips, face_moves, threads, merge_coplanar, insertion. node_spacing (N,): the element size each node asks "
+      "boundary_flips, face_moves, threads, merge_coplanar, quality_floor, insertion. node_spacing (N,): the element size each node asks "
       "for (a density hint; 0: none). progress(fraction) is called on this thread; returning False cancels (raises "
       "Cancelled). Returns the mesh dict of read_mesh (tri_tag: the input face of each boundary triangle; region: "
       "the input region of each tetrahedron) with 'stats', the --stats JSON as a dict. Raises InputError (a "

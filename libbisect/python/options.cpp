@@ -88,6 +88,7 @@ py::dict default_options() {
   d["face_moves"] = o.optimize.face_moves;
   d["threads"] = o.threads;
   d["merge_coplanar"] = o.merge_coplanar;
+  d["quality_floor"] = o.quality_floor;
   d["insertion"] = o.delaunay_insertion ? "delaunay" : "minmax";
   d["min_size"] = o.sizing.min_size;
   d["max_size"] = o.sizing.max_size;
@@ -118,6 +119,7 @@ GenerateOptions generate_options(const py::dict& kwargs) {
     else if (k == "face_moves") o.optimize.face_moves = flag(value, "face_moves");
     else if (k == "threads") o.threads = static_cast<int>(integer(value, "threads", 0, 1024));
     else if (k == "merge_coplanar") o.merge_coplanar = flag(value, "merge_coplanar");
+    else if (k == "quality_floor") o.quality_floor = flag(value, "quality_floor");
     else if (k == "insertion") {
       const std::string s = py::isinstance<py::str>(value) ? value.cast<std::string>() : "";
       if (s != "delaunay" && s != "minmax") throw InputError("insertion must be 'delaunay' or 'minmax' (got " + show(value) + ")");

@@ -1,5 +1,6 @@
 // Small polyhedral inputs that many tests use, as .poly text, and the helpers that read them.
 #pragma once
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -41,5 +42,21 @@ inline std::string prism(const std::vector<Vec2>& outline) {
 inline std::string unit_cube() { return prism({{0, 0}, {1, 0}, {1, 1}, {0, 1}}); }
 inline const std::vector<Vec2> kLOutline = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
 inline std::string l_prism() { return prism(kLOutline); }
+
+// A 4 x 2 x 1 plate: the rectangle 0..3 x 0..2 and a half disc of radius 1 round (3, 1) at its
+// end, in 32 facets 0.1 wide (lug.stl's rounded end at twice its thickness). Its mesh for R = 300
+// is poor where the walls' cap holds the count (the quality floor's case, test_quality_floor.cpp).
+inline std::string round_ended_plate() {
+  std::vector<Vec2> outline{{0, 0}, {3, 0}};
+  constexpr int kSegments = 32;
+  const double pi = std::acos(-1.0);
+  for (int k = 1; k < kSegments; ++k) {
+    const double a = -pi / 2 + pi * k / kSegments;
+    outline.emplace_back(3 + std::cos(a), 1 + std::sin(a));
+  }
+  outline.emplace_back(3, 2);
+  outline.emplace_back(0, 2);
+  return prism(outline);
+}
 
 }  // namespace bisect::test

@@ -80,6 +80,13 @@ struct GenerateOptions {
   // that a flat face's thin facets do not make thin elements; input face numbers (tri_tag) then
   // number the merged faces
   bool merge_coplanar = true;
+  // polyhedral route: when the mesh made for R (up to 5,000 tetrahedra) misses the mean's quality
+  // bar (mean alpha 0.20, 0.24 from 1,000 tetrahedra on), meshes of 1.5, 2.25, 3.375 and 4 times
+  // its count are made in turn and the first that meets it, with a smallest dihedral of 10 degrees
+  // (or 0.8 times the first mesh's, if less), is kept, its count reported as count_floor with the reason
+  // "quality: ..." (pipeline/quality_floor.hpp); when none does, the first mesh stays. Not with a
+  // given size.
+  bool quality_floor = true;
   bool delaunay_insertion = true;   // Delaunay cavities, else the thesis's min-max (cell_fill.hpp)
   // threads for the face grids and the cell fillings (0: one per core); the mesh is the same
   // for every count, and the progress callback is called on the calling thread only
@@ -116,7 +123,10 @@ struct GenerateStats {
   // when the count misses R by more than 20%: the count predicted at the coarsest spacing, the
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;
-  std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", ...
+  std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", "quality: ...", ...
+  // polyhedral route: the count searches past the first for the quality floor, each with its
+  // fillings (at most 3) and, unless the facets or walls held its count, its mesh; kept or not
+  std::int64_t quality_meshes = 0;
   // the smallest angle of the surface triangles (degrees; of the output, after the face moves of
   // the mean shape's passes and the surface angles' pass), and (B-rep route) order 2 elements
   // whose curved boundary edge had to be made straight to keep the Jacobian positive

@@ -21,6 +21,7 @@
 #include "optimize/optimize_mesh.hpp"
 #include "pipeline/count_calibration.hpp"
 #include "pipeline/mesh_assembly.hpp"
+#include "pipeline/quality_floor.hpp"
 
 namespace bisect {
 namespace {
@@ -48,6 +49,65 @@ std::vector<Vec3> one_face_normals(const PolyhedralModel& m, const pipeline::Bui
   for (std::size_t v = 0; v < normal.size(); ++v)
     if (source[v] < 0) normal[v] = Vec3::Zero();
   return normal;
+}
+
+// The work a mesh not kept cost, added to the figures of the one kept: stage seconds, node
+// placements, fillings, meshes made for the quality floor.
+void carry_work(const GenerateStats& from, GenerateStats& to) {
+  to.gen_nodes = from.gen_nodes, to.gen_tets = from.gen_tets, to.optimize = from.optimize;
+  to.optimize_parts = from.optimize_parts;
+  to.placements = from.placements, to.fillings = from.fillings, to.quality_meshes = from.quality_meshes;
+}
+
+void add_times(OptimizeTimes& to, const OptimizeTimes& t) {
+  to.build += t.build, to.blocks += t.blocks, to.flips += t.flips, to.smooth += t.smooth;
+  to.refill += t.refill, to.slivers += t.slivers, to.mean += t.mean;
+}
+
+// 7.5 over the whole mesh of the filled cells (cut faces are no constraint any more), smoothing,
+// the sliver repair and the mean shape, then the output mesh. Sets the figures of this mesh in
+// st and adds the optimisation's seconds to its times.
+TetMesh optimise_and_assemble(const Decomposition& d, pipeline::Calibrated& cal, const GenerateOptions& opt,
+                              const std::function<bool(double)>& progress, GenerateStats& st) {
+  pipeline::Built& b = cal.built;
+  st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
+  st.refilled_cells = b.refilled_cells;
+  st.graded_nodes = b.graded_nodes;
+  st.spacing = cal.spacing;
+  const auto t_opt = Clock::now();
+  tet::TetComplex cx(b.X);
+  optimize::FilledMesh filled{std::move(b.tets), std::move(b.region), {}, {}, {}};
+  // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5) within
+  // their input face
+  for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
+    const ModelFace& face = d.model.faces[f];
+    if (!face.alive || face.source < 0) continue;
+    for (const auto& t : b.grids.face_tris[f]) {
+      filled.held.insert(tet::face_key(t[0], t[1], t[2]));
+      if (face.front < 0 || face.back < 0) filled.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
+    }
+  }
+  // nodes on input faces stay where they are, but for moves within the one face they lie inside
+  std::vector<char> fixed = pipeline::node_kinds(d.model, b);
+  for (char& k : fixed) k = k != pipeline::kInside;
+  filled.slides.plane = one_face_normals(d.model, b);
+  std::function<bool(double)> optimize_progress;
+  if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
+  const optimize::OptimizeCounts oc =
+      optimize::optimize_filled(cx, std::move(filled), b.X, fixed, opt.optimize, optimize_progress, opt.threads);
+  add_times(st.optimize_parts, oc.times);
+  st.flips += oc.flips;
+  st.sliver_moves = oc.sliver_moves;
+  st.surface_moves = oc.surface_moves;
+  st.mean_changes = oc.mean_changes;
+  st.refilled_folds = oc.refilled_folds;
+  st.optimize_blocks = oc.blocks;
+  Vec3 fold;
+  Index fold_region = 0;
+  if (oc.folds_left > 0 && optimize::find_fold(cx, b.X, &fold, &fold_region))  // never a mesh with a fold
+    throw MeshingError(d.model.source + ": a tetrahedron at " + point_name(fold) + " came out inside out (a defect of the mesher)");
+  st.optimize += since(t_opt);
+  return pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);
 }
 
 }  // namespace
@@ -100,53 +160,57 @@ TetMesh generate_mesh(const PolyInput& original, const GenerateOptions& opt, Gen
   std::function<bool(double)> fill_progress;
   if (progress) fill_progress = [&](double x) { return progress(0.2 + 0.6 * x); };
   pipeline::Calibrated cal = pipeline::fill_to_count(d, start, opt.sizing.size, want, opt, fill_progress, st);
-  pipeline::Built& b = cal.built;
   st.fillings = cal.fillings;
   st.count_floor = cal.count_floor;
   if (st.count_floor > 0) {
     // cells' walls kept their spacing below R's, else the input's own nodes and edges
     st.count_floor_reason = cal.floor_by_walls ? pipeline::walls_floor_reason(cal.thinnest_wall) : "facets";
   }
-  st.helper_nodes = b.helper_nodes, st.helpers_removed = b.helpers_removed, st.skipped_nodes = b.skipped_nodes, st.flips = b.flips;
-  st.refilled_cells = b.refilled_cells;
-  st.graded_nodes = b.graded_nodes;
-  st.spacing = cal.spacing;
-  // 7.5 over the whole mesh (cut faces are no constraint any more), then smoothing
-  const auto t_opt = Clock::now();
-  tet::TetComplex cx(b.X);
-  optimize::FilledMesh filled{std::move(b.tets), std::move(b.region), {}, {}, {}};
-  // input faces hold; those of the outer boundary may take the 2-2 transformation (7.5) within
-  // their input face
-  for (std::size_t f = 0; f < d.model.faces.size(); ++f) {
-    const ModelFace& face = d.model.faces[f];
-    if (!face.alive || face.source < 0) continue;
-    for (const auto& t : b.grids.face_tris[f]) {
-      filled.held.insert(tet::face_key(t[0], t[1], t[2]));
-      if (face.front < 0 || face.back < 0) filled.surface_tag[tet::face_key(t[0], t[1], t[2])] = face.source;
+  TetMesh out = optimise_and_assemble(d, cal, opt, progress, st);
+  // the count floor for quality's sake (pipeline/quality_floor.hpp), from the count made for R
+  // (which the facets or walls may have held above it); not when a size was given
+  const std::int64_t made = static_cast<std::int64_t>(out.num_tets());
+  if (opt.quality_floor && opt.sizing.size <= 0 && made <= pipeline::kQualityFloorMaxTets) {
+    const pipeline::QualityBars bars = pipeline::quality_bars(std::max(want, made));
+    const QualitySummary at_asked = summarize_quality(element_quality(out, {}, opt.threads));
+    if (!pipeline::meets_mean_bar(at_asked, bars)) {
+      double spacing = cal.spacing;
+      std::int64_t last = made;
+      for (const std::int64_t more : pipeline::quality_floor_counts(made)) {
+        if (more <= last) continue;  // the count already holds that many
+        GenerateStats trial = st;
+        const double from = spacing * std::cbrt(static_cast<double>(last) / static_cast<double>(more));
+        pipeline::Calibrated again;
+        TetMesh m;
+        try {  // the mesh at R is made: a trial that cannot finish (the memory bound, a stage) ends the floor
+          again = pipeline::fill_to_count(d, from, 0, more, opt, fill_progress, trial);
+          trial.fillings += again.fillings;
+          ++trial.quality_meshes;
+          if (again.count_floor > 0) {  // out of reach: the facets or walls hold the count
+            carry_work(trial, st);
+            break;
+          }
+          m = optimise_and_assemble(d, again, opt, progress, trial);
+        } catch (const InputError&) {
+          carry_work(trial, st);
+          break;
+        } catch (const MeshingError&) {
+          carry_work(trial, st);
+          break;
+        }
+        const QualitySummary q = summarize_quality(element_quality(m, {}, opt.threads));
+        last = static_cast<std::int64_t>(m.num_tets()), spacing = again.spacing;
+        if (pipeline::floor_keeps(q, at_asked, bars)) {
+          trial.count_floor = last;
+          trial.count_floor_reason = pipeline::quality_floor_reason(want, at_asked, bars, last, q);
+          st = trial, out = std::move(m);
+          break;
+        }
+        carry_work(trial, st);  // not kept: the mesh at R stays, with its figures
+      }
     }
   }
-  // nodes on input faces stay where they are, but for moves within the one face they lie inside
-  std::vector<char> fixed = pipeline::node_kinds(d.model, b);
-  for (char& k : fixed) k = k != pipeline::kInside;
-  filled.slides.plane = one_face_normals(d.model, b);
-  std::function<bool(double)> optimize_progress;
-  if (progress) optimize_progress = [&](double x) { return progress(0.8 + 0.2 * x); };
-  const optimize::OptimizeCounts oc =
-      optimize::optimize_filled(cx, std::move(filled), b.X, fixed, opt.optimize, optimize_progress, opt.threads);
-  st.optimize_parts = oc.times;
-  st.flips += oc.flips;
-  st.sliver_moves = oc.sliver_moves;
-  st.surface_moves = oc.surface_moves;
-  st.mean_changes = oc.mean_changes;
-  st.refilled_folds = oc.refilled_folds;
-  st.optimize_blocks = oc.blocks;
-  Vec3 fold;
-  Index fold_region = 0;
-  if (oc.folds_left > 0 && optimize::find_fold(cx, b.X, &fold, &fold_region))  // never a mesh with a fold
-    throw MeshingError(d.model.source + ": a tetrahedron at " + point_name(fold) + " came out inside out (a defect of the mesher)");
   if (progress && !progress(1.0)) throw Cancelled();
-  st.optimize = since(t_opt);
-  TetMesh out = pipeline::assemble_mesh(d.model, b.grids, cx, b.X, opt.order);
   st.nodes = static_cast<std::int64_t>(out.nodes.size());
   st.tets = static_cast<std::int64_t>(out.num_tets());
   st.surface_min_angle = surface_min_angle_deg(out);
@@ -160,7 +224,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
   o << "{\"nodes\": " << s.nodes << ", \"tets\": " << s.tets << ", \"regions\": " << s.regions << ", \"convex_cells\": " << s.convex_cells
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes << ", \"surface_moves\": " << s.surface_moves << ", \"surface_flips\": " << s.surface_flips
-    << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor
+    << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor << ", \"quality_meshes\": " << s.quality_meshes
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"facet_pieces\": " << s.facet_pieces << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
     << ", \"refilled_folds\": " << s.refilled_folds << ", \"optimize_blocks\": " << s.optimize_blocks << ", \"proxy_attempts\": " << s.proxy_attempts << ", \"placements\": " << s.placements

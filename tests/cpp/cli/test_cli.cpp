@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_run.hpp"
+#include "poly_shapes.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -244,6 +245,28 @@ TEST(Cli, NoFaceMovesKeepsTheFacesNodesWhereTheGridsPutThem) {
   };
   EXPECT_GT(changes(stats[1]), changes(stats[0])) << stats[0] << "\n" << stats[1];
   EXPECT_NE(mesh[0], mesh[1]);
+}
+
+// The count floor for quality's sake and --no-quality-floor: the plate with a round end at R = 300
+// gets more tetrahedra, and --stats says why; with the flag it keeps the first mesh.
+TEST(Cli, NoQualityFloorKeepsTheFirstMesh) {
+  const fs::path in = write_file("round-ended-plate.poly", bisect::test::round_ended_plate());
+  std::string stats[2];
+  for (int floor : {0, 1}) {
+    const fs::path out = scratch_dir() / ("floor" + std::to_string(floor) + ".vtu");
+    const fs::path json = scratch_dir() / ("floor" + std::to_string(floor) + ".json");
+    const CliResult r = run("'" + in.string() + "' -n 300" + (floor ? "" : " --no-quality-floor") + " -o '" + out.string() + "' --stats '" + json.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    stats[floor] = slurp(json);
+  }
+  const auto tets = [](const std::string& s) {
+    const std::size_t at = s.find("\"tets\": ");
+    return at == std::string::npos ? -1L : std::atol(s.c_str() + at + 8);
+  };
+  EXPECT_GT(tets(stats[1]), tets(stats[0]));
+  EXPECT_NE(stats[1].find("\"count_floor_reason\": \"quality: the mesh for R = 300"), std::string::npos) << stats[1];
+  EXPECT_EQ(stats[0].find("quality: the mesh"), std::string::npos) << stats[0];
+  EXPECT_NE(stats[0].find("\"quality_meshes\": 0"), std::string::npos) << stats[0];
 }
 
 TEST(Cli, CellsOnlyRejectsACavityCrossingItsOuterBoundary) {
