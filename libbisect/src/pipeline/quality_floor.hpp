@@ -10,7 +10,8 @@
 // (0.217). The quality over the spacing is not monotonic there (-s 0.45: 0.214; 0.33: 0.213 and a
 // smallest dihedral of 8.5 degrees; 0.25: 0.218; 0.2: 0.234; 0.18: 0.245), so no cap by the
 // plate's thickness short of a third of it reaches the bar, and such a cap would multiply the
-// count of every thick part at coarse R. Measuring the mesh and asking for more where it falls
+// count of every thick part at coarse R (cantilever.stl: 160 tetrahedra at R = 50, 1,819 at a
+// third of its 10 mm). Measuring the mesh and asking for more where it falls
 // short costs at most four more meshes of at most 4 times its count, and only at coarse counts.
 // The walls' cap alone can leave a coarse mesh poor too: a 4 x 2 x 1 plate with a round end of 32
 // facets at R = 300 came out at 811 tetrahedra, mean alpha 0.129 and 4.1 degrees.
