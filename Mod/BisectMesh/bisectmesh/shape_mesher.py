@@ -166,6 +166,7 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
     out = core().mesh_brep(brep, name="the shape", progress=core_progress, elements=elements, size=size, order=int(order),
                            threads=int(threads), **options)
     t1 = time.time()
+    _warn_mesh_like(out["stats"])
     if progress is not None and progress(core_share) is False:
         raise core().Cancelled("meshing cancelled")
 
@@ -181,6 +182,20 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
     if report is not None:
         report.update(stats=out["stats"], seconds={"core": t1 - t0, "femmesh": t2 - t1}, arrays=core_arrays(out))
     return mesh
+
+
+def _warn_mesh_like(stats):
+    """FreeCAD's report view is told when the shape is a mesh made into a shape (coplanar
+    triangle faces, stats["coplanar_hint"]): its triangles' edges and sharp corners bound the
+    elements, and Part's refine merges them."""
+    hint = stats.get("coplanar_hint")
+    if not hint:
+        return
+    try:
+        import FreeCAD
+    except ImportError:  # outside FreeCAD: the report's stats carry it
+        return
+    FreeCAD.Console.PrintWarning("BisectMesh: %s\n" % hint)
 
 
 def progress_shares(order, check=False):

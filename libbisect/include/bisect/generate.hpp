@@ -124,6 +124,11 @@ struct GenerateStats {
   // least the input's own nodes and edges allow (facet-bound inputs such as fine STL files)
   std::int64_t count_floor = 0;
   std::string count_floor_reason;  // what sets the floor: "facets", "curvature", "features", "quality: ...", ...
+  // B-rep route: triangle faces lying in one plane with a triangle neighbour (a shape made from a
+  // mesh, domain/mesh_like_faces.hpp), and when there are 4 or more, what to do about them (else
+  // empty): their edges and corners bound the elements
+  std::int64_t coplanar_triangles = 0;
+  std::string coplanar_hint;
   // polyhedral route: the count searches past the first for the quality floor, each with its
   // fillings (at most 3) and, unless the facets or walls held its count, its mesh; kept or not
   std::int64_t quality_meshes = 0;

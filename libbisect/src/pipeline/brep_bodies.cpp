@@ -10,6 +10,7 @@
 
 #include "bisect/errors.hpp"
 #include "bisect/generate.hpp"
+#include "domain/mesh_like_faces.hpp"
 #include "pipeline/brep_bodies.hpp"
 
 namespace bisect {
@@ -93,9 +94,8 @@ TetMesh generate_named(const BrepInput& in, const GenerateOptions& opt, Generate
   }
 }
 
-}  // namespace
-
-TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, GenerateStats* stats) {
+// The solids of `in`, each group of connected solids meshed on its own.
+TetMesh generate_bodies(const BrepInput& in, const GenerateOptions& opt, GenerateStats* stats) {
   const std::vector<std::vector<Index>> groups = connected_solids(in);
   if (groups.size() <= 1) return generate_named(in, opt, stats);
   // Solids that share no face (a compound of parts that touch, or lie apart) are separate bodies:
@@ -156,6 +156,23 @@ TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, Gene
   total.total = since(t_all);
   if (stats) *stats = total;
   return all;
+}
+
+}  // namespace
+
+TetMesh generate_brep_mesh(const BrepInput& in, const GenerateOptions& opt, GenerateStats* stats) {
+  // a shape made from a mesh (domain/mesh_like_faces.hpp): said in the stats, and added to a
+  // refusal, where it may be the cause
+  const domain::MeshLikeFaces like = domain::mesh_like_faces(in);
+  const std::string hint = domain::mesh_like_hint(like);
+  try {
+    TetMesh m = generate_bodies(in, opt, stats);
+    if (stats) stats->coplanar_triangles = like.triangles, stats->coplanar_hint = hint;
+    return m;
+  } catch (const MeshingError& e) {
+    if (hint.empty()) throw;
+    throw MeshingError(std::string(e.what()) + " (" + hint + ")");
+  }
 }
 
 }  // namespace bisect

@@ -225,6 +225,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"spacing\": " << s.spacing << ", \"helper_nodes\": " << s.helper_nodes << ", \"helpers_removed\": " << s.helpers_removed
     << ", \"skipped_nodes\": " << s.skipped_nodes << ", \"flips\": " << s.flips << ", \"sliver_moves\": " << s.sliver_moves << ", \"mean_changes\": " << s.mean_changes << ", \"surface_moves\": " << s.surface_moves << ", \"surface_flips\": " << s.surface_flips
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor << ", \"quality_meshes\": " << s.quality_meshes
+    << ", \"coplanar_triangles\": " << s.coplanar_triangles << ", \"coplanar_hint\": " << json_string(s.coplanar_hint)
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
     << ", \"straightened_edges\": " << s.straightened_edges << ", \"facet_pieces\": " << s.facet_pieces << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
     << ", \"refilled_folds\": " << s.refilled_folds << ", \"optimize_blocks\": " << s.optimize_blocks << ", \"proxy_attempts\": " << s.proxy_attempts << ", \"placements\": " << s.placements
