@@ -26,12 +26,17 @@ class MeshLikeShapeTest(unittest.TestCase):
     def test_coplanar_triangles_are_named_with_the_remedy(self):
         self.assertEqual(len(self.solid.Faces), 12)
         report = {}
-        shape_mesher.mesh_shape(self.solid, elements=300, order=2, report=report)
+        mesh = shape_mesher.mesh_shape(self.solid, elements=300, order=2, report=report)
         stats = report["stats"]
         self.assertEqual(stats["coplanar_triangles"], 12)
         hint = stats["coplanar_hint"]
         self.assertRegex(hint, r"^Face\d+ and Face\d+ \(and 10 more triangles\) lie in one plane")
         self.assertIn("removeSplitter", hint)
+        # the mesh object's summary (the task panel's text) carries it too
+        from bisectmesh import mesh_object
+        result = mesh_object.result_of(mesh, report, 1.0, 2)
+        self.assertEqual(result["note"], hint)
+        self.assertIn("note: " + hint, mesh_object.summary(result))
 
     def test_the_refined_shape_has_none_and_good_elements(self):
         refined = self.solid.removeSplitter()

@@ -416,6 +416,8 @@ def result_of(femmesh, report, seconds, order):
     for key in ("regions", "convex_cells"):
         if key in stats:
             result[key] = stats[key]
+    if stats.get("coplanar_hint"):  # a shape made from a mesh: the summary says what to do
+        result["note"] = stats["coplanar_hint"]
     for key in ("deflection", "angular_deflection", "input_faces", "projected"):
         if key in report:
             result[key] = report[key]
@@ -442,6 +444,8 @@ def summary(result):
     if "gamma_mean" in q:
         lines.append("gamma min %.4f mean %.4f, alpha mean %.4f" % (
             q.get("gamma_min", float("nan")), q["gamma_mean"], q.get("alpha_mean", float("nan"))))
+    if result.get("note"):
+        lines.append("note: " + result["note"])
     return "\n".join(lines)
 
 

@@ -187,9 +187,10 @@ def mesh_shape(shape, elements=None, size=None, order=2, resolution=None, hints=
 def _warn_mesh_like(stats):
     """FreeCAD's report view is told when the shape is a mesh made into a shape (coplanar
     triangle faces, stats["coplanar_hint"]): its triangles' edges and sharp corners bound the
-    elements, and Part's refine merges them."""
+    elements, and Part's refine merges them. Only on the main thread (the task panel's worker
+    shows it in its summary instead, mesh_object.summary)."""
     hint = stats.get("coplanar_hint")
-    if not hint:
+    if not hint or threading.current_thread() is not threading.main_thread():
         return
     try:
         import FreeCAD
