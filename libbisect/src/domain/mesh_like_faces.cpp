@@ -1,5 +1,6 @@
 #include "domain/mesh_like_faces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
