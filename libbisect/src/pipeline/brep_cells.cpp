@@ -162,6 +162,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
           }
         }
         // back to the cell alone for the last two ways
+        const std::size_t joined_with = members[root].size() - 1;
         group = group_before, members = members_before, counts->joined = joined_before;
         // the cell alone, by Delaunay boundary recovery: no point need see it whole
         CellJob recovered = job_of(static_cast<Index>(c));
@@ -174,10 +175,13 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         // global optimisation
         CellJob alone = job_of(static_cast<Index>(c));
         alone.in_proxy = alone.keep_inverted = true;
+        // named alone: the group's name would give the centre and faces of the cells it was
+        // joined with, tens of millimetres away (corpus/wrenchnut.brep: 22 mm)
         if (!fill_job_works(alone, X, &P, delaunay))
-          throw MeshingError(job.name + ": no point sees its whole boundary, even joined with its neighbours, and it cannot be "
-                                        "filled in the proxy's geometry either (the cell is narrower than the curved face's bulge "
-                                        "next to it)");
+          throw MeshingError(alone.name + ": no point sees its whole boundary" +
+                             (joined_with > 0 ? ", even joined with " + std::to_string(joined_with) + " of its neighbours," : std::string()) +
+                             " and it cannot be filled in the proxy's geometry either (the cell is narrower than the curved face's bulge "
+                             "next to it)");
         last_resort[c] = 1;
         break;
       }

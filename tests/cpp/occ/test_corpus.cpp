@@ -111,6 +111,10 @@ TEST_P(Corpus, MeshesOrIsRefusedNamingTheFace) {
     if (what.find("convex cell") != std::string::npos || what.find("inside out") != std::string::npos) {
       EXPECT_NE(what.find(" beside Face"), std::string::npos) << what;
     }
+    // a cell no fill takes is named alone, at its own centre: not as the group of cells it was
+    // joined with for the trial fillings (whose centre lay 22 mm away on wrenchnut)
+    const std::size_t unfilled = what.find(": no point sees its whole boundary");
+    if (unfilled != std::string::npos) EXPECT_EQ(what.substr(0, unfilled).find("(joined with"), std::string::npos) << what;
   }
 }
 
