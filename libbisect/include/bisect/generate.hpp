@@ -145,6 +145,7 @@ struct GenerateStats {
   std::int64_t proxy_cells = 0;  // cells filled in the proxy's geometry (proxy_fill.hpp)
   std::int64_t joined_cells = 0; // cells joined with a neighbour to be seen whole (brep_cells.hpp)
   std::int64_t recovered_cells = 0; // cells filled by Delaunay boundary recovery (tet/recovery_fill.hpp)
+  std::int64_t steiner_nodes = 0;   // interior nodes that recovery added where a missing boundary triangle's hole needed one
   // cells whose star fill (smallest dihedral under 5 degrees) was replaced by a better one from
   // Delaunay boundary recovery: thin cells, whose two sides' grids are not in line
   std::int64_t refilled_cells = 0;

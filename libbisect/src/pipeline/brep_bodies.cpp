@@ -133,6 +133,7 @@ TetMesh generate_bodies(const BrepInput& in, const GenerateOptions& opt, Generat
     total.mean_changes += st.mean_changes;
     total.fillings += st.fillings, total.graded_nodes += st.graded_nodes, total.straightened_edges += st.straightened_edges;
     total.proxy_cells += st.proxy_cells, total.joined_cells += st.joined_cells, total.recovered_cells += st.recovered_cells;
+    total.steiner_nodes += st.steiner_nodes;
     total.refilled_cells += st.refilled_cells, total.refilled_folds += st.refilled_folds;
     total.surface_min_angle = g == 0 ? st.surface_min_angle : std::min(total.surface_min_angle, st.surface_min_angle);
     total.spacing = std::max(total.spacing, st.spacing);

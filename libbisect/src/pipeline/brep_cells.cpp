@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bisect/errors.hpp"
+#include "tet/boundary_crossing.hpp"
 #include "tet/cell_fill.hpp"
 
 namespace bisect::pipeline {
@@ -40,6 +41,28 @@ void drop_two_sided(std::vector<std::array<Index, 3>>& boundary) {
   for (std::size_t i = 0; i < boundary.size(); ++i)
     if (!drop[i]) boundary[kept++] = boundary[i];
   boundary.resize(kept);
+}
+
+// Why no fill takes cell c, when its boundary crosses itself: which grids pass through each other,
+// and where (the B-rep face of each triangle, or a cut between cells); empty when it does not.
+std::string crossing_reason(const CellJob& job, const BrepGrids& g, Index c, const std::vector<Vec3>& X) {
+  const std::optional<tet::BoundaryCrossing> x = tet::boundary_crossing(X, job.boundary);
+  if (!x) return {};
+  std::map<std::array<Index, 3>, Index> face_of;  // the cell's face pieces' triangles, nodes sorted
+  for (const FacePiece& piece : g.pieces)
+    if (piece.cell_out == c || piece.cell_in == c)
+      for (auto t : piece.tris) {
+        std::sort(t.begin(), t.end());
+        face_of[t] = piece.face;
+      }
+  auto owner = [&](std::array<Index, 3> t) {
+    std::sort(t.begin(), t.end());
+    const auto it = face_of.find(t);
+    return it == face_of.end() ? std::string("a cut face, a plane the solid was cut along,") : face_name(it->second);
+  };
+  return ": its boundary crosses itself once its grids lie on the true surfaces (an edge on " + owner(job.boundary[x->edge_triangle]) +
+         " passes through a triangle on " + owner(job.boundary[x->crossed]) + " at " + point_name(x->at) +
+         "), so no tetrahedra can fill it: the cell is thinner there than the curved face's bulge over the facets it was cut from";
 }
 
 }  // namespace
@@ -125,7 +148,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
   };
   *counts = {};
   std::vector<char> last_resort(n, 0);  // cells filled in the proxy keeping fixed inverted tetrahedra
-  std::vector<char> recover(n, 0);      // cells filled by boundary recovery
+  std::vector<char> recover(n, 0);      // cells filled by boundary recovery (2: with its second phase)
   for (std::size_t c = 0; c < n; ++c) {
     // the trial fillings below add up: Stop within them
     if (cancelled && cancelled(static_cast<double>(c) / static_cast<double>(n))) throw Cancelled();
@@ -175,15 +198,26 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         // global optimisation
         CellJob alone = job_of(static_cast<Index>(c));
         alone.in_proxy = alone.keep_inverted = true;
+        if (fill_job_works(alone, X, &P, delaunay)) {
+          last_resort[c] = 1;
+          break;
+        }
+        // after the last resort: boundary recovery with its second phase, flips that take the
+        // tetrahedra out of a missing edge's way and points added inside (face_recovery.hpp);
+        // after it, so that every cell the other fills take is filled as before
+        CellJob more = job_of(static_cast<Index>(c));
+        more.recover = more.steiner = true;
+        if (fill_job_works(more, X, &P, delaunay)) {
+          recover[c] = 2;
+          break;
+        }
         // named alone: the group's name would give the centre and faces of the cells it was
         // joined with, tens of millimetres away (corpus/wrenchnut.brep: 22 mm)
-        if (!fill_job_works(alone, X, &P, delaunay))
-          throw MeshingError(alone.name + ": no point sees its whole boundary" +
+        if (const std::string why = crossing_reason(more, g, static_cast<Index>(c), X); !why.empty()) throw MeshingError(alone.name + why);
+        throw MeshingError(alone.name + ": no point sees its whole boundary" +
                              (joined_with > 0 ? ", even joined with " + std::to_string(joined_with) + " of its neighbours," : std::string()) +
                              " and it cannot be filled in the proxy's geometry either (the cell is narrower than the curved face's bulge "
                              "next to it)");
-        last_resort[c] = 1;
-        break;
       }
       const Index other = group[best];
       for (Index k : members[other]) group[k] = root;
@@ -197,7 +231,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
     if (group[c] != static_cast<Index>(c)) continue;
     jobs.push_back(job_of(static_cast<Index>(c)));
     if (recover[c]) {
-      jobs.back().recover = true;
+      jobs.back().recover = true, jobs.back().steiner = recover[c] == 2;
       ++counts->recovered;
     } else if (members[c].size() == 1 && !star(jobs.back())) {
       jobs.back().in_proxy = true, jobs.back().keep_inverted = last_resort[c] != 0;

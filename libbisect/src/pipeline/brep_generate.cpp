@@ -336,7 +336,7 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   best->on_boundary.resize(best->X.size(), 0);  // helpers the cells kept are inside
   st->graded_nodes = best->graded_nodes;
   st->helper_nodes = filled.helper_nodes, st->helpers_removed = filled.helpers_removed;
-  st->refilled_cells = filled.refilled;
+  st->refilled_cells = filled.refilled, st->steiner_nodes = filled.steiner_nodes;
   st->skipped_nodes = filled.skipped_nodes, st->flips = filled.flips;
   // 7.5 over the whole mesh: only the B-rep faces (and the interfaces on them) hold
   const auto t_opt = Clock::now();

@@ -37,9 +37,10 @@ double share_under_10(const std::vector<Vec3>& X, const std::vector<tet::Tet>& t
 // One cell's filling on its own copy of its nodes (so that cells fill in parallel): local ids
 // follow the global ones in order, so the filling is the one the global ids would give.
 struct CellFilling {
-  std::vector<Index> global;  // local node -> node of X (a helper: -1 until committed)
+  std::vector<Index> global;  // local node -> node of X (a node the fill added: -1 until committed)
   std::vector<Vec3> moved;    // in_proxy: the cell's nodes' true positions after the untangling
-  std::vector<Vec3> helper;   // the helper node, when one was added (left out of the mesh when removed again)
+  std::vector<Vec3> helper;   // nodes the fill added: the star's helper (left out of the mesh when removed
+                              // again), or the recovery's Steiner points
   std::vector<tet::Tet> tets;
   tet::CellFillStats stats;
   bool recovered = false;     // a star fill replaced by Delaunay boundary recovery's (better)
@@ -55,7 +56,10 @@ CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const s
   const std::vector<Index> interior = own_ids.nodes(job.interior);
   try {
     if (job.recover) {
-      out.tets = tet::fill_by_recovery(X, boundary, interior, &out.stats);
+      // Steiner points where a hole needs them: they join the cell's nodes as helpers do
+      std::vector<Vec3> steiner;
+      out.tets = tet::fill_by_recovery(X, boundary, interior, &out.stats, job.steiner ? &steiner : nullptr);
+      X.insert(X.end(), steiner.begin(), steiner.end());
     } else if (job.in_proxy) {
       std::vector<Vec3> P = own_ids.points(*proxy);
       out.tets = fill_in_proxy(X, P, boundary, interior, job.centre_p, delaunay, &out.stats, job.keep_inverted);
@@ -92,10 +96,8 @@ CellFilling fill_one(const CellJob& job, const std::vector<Vec3>& nodes, const s
   } catch (const MeshingError& e) {
     throw MeshingError(job.name + ": " + e.what());
   }
-  if (X.size() > out.global.size()) {  // the helper (7.6)
-    out.helper.push_back(X.back());
-    out.global.push_back(-1);
-  }
+  for (std::size_t i = out.global.size(); i < X.size(); ++i) out.helper.push_back(X[i]);  // the helper (7.6), Steiner points
+  out.global.resize(X.size(), -1);
   return out;
 }
 
@@ -130,10 +132,12 @@ FilledCells fill_cell_jobs(std::vector<Vec3>& X, const std::vector<CellJob>& job
         CellFilling& f = made[c];
         // an untangled cell's interior nodes moved (its boundary nodes, shared, did not)
         for (std::size_t i = 0; i < f.moved.size(); ++i) X[f.global[i]] = f.moved[i];
-        if (!f.helper.empty()) {
-          X.push_back(f.helper.front());
-          f.global.back() = static_cast<Index>(X.size() - 1);
+        const std::size_t own = f.global.size() - f.helper.size();
+        for (std::size_t i = 0; i < f.helper.size(); ++i) {
+          X.push_back(f.helper[i]);
+          f.global[own + i] = static_cast<Index>(X.size() - 1);
         }
+        out.steiner_nodes += f.stats.steiner;
         out.helper_nodes += f.stats.helper;
         out.helpers_removed += f.stats.helper_removed;
         out.skipped_nodes += f.stats.skipped;

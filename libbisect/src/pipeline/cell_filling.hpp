@@ -28,6 +28,9 @@ struct CellJob {
   // The B-rep route: filled by Delaunay boundary recovery (tet/recovery_fill.hpp), when neither
   // the star nor the proxy's geometry fills it
   bool recover = false;
+  // recover: with the recovery's second phase (flips and Steiner points, face_recovery.hpp), the
+  // fill after the last resort; without, a cell the fans alone recover is filled as before
+  bool steiner = false;
   Vec3 centre_p = Vec3::Zero();  // the proxy cell's centroid
 };
 
@@ -36,10 +39,11 @@ struct FilledCells {
   std::vector<Index> region;
   std::int64_t helper_nodes = 0, helpers_removed = 0, skipped_nodes = 0, flips = 0;
   std::int64_t refilled = 0;  // star fills replaced by Delaunay boundary recovery's, a better one
+  std::int64_t steiner_nodes = 0;  // Steiner points the fills by boundary recovery added
 };
 
-// Fills every job; a helper node a cell keeps joins X. progress(fraction of cells done) is called
-// on this thread, in cell order; false cancels.
+// Fills every job; a helper node a cell keeps, and a recovery's Steiner points, join X.
+// progress(fraction of cells done) is called on this thread, in cell order; false cancels.
 // P: the nodes' proxy positions, for the jobs filled in_proxy (may be null otherwise). X may move
 // (the untangling of a cell filled in the proxy's geometry moves its interior nodes).
 FilledCells fill_cell_jobs(std::vector<Vec3>& X, const std::vector<CellJob>& jobs, bool delaunay, int threads,

@@ -227,7 +227,7 @@ std::string generate_stats_json(const GenerateStats& s, const QualitySummary& q)
     << ", \"fillings\": " << s.fillings << ", \"graded_nodes\": " << s.graded_nodes << ", \"count_floor\": " << s.count_floor << ", \"quality_meshes\": " << s.quality_meshes
     << ", \"coplanar_triangles\": " << s.coplanar_triangles << ", \"coplanar_hint\": " << json_string(s.coplanar_hint)
     << ", \"count_floor_reason\": " << json_string(s.count_floor_reason) << ", \"surface_min_angle\": " << s.surface_min_angle
-    << ", \"straightened_edges\": " << s.straightened_edges << ", \"facet_pieces\": " << s.facet_pieces << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"refilled_cells\": " << s.refilled_cells
+    << ", \"straightened_edges\": " << s.straightened_edges << ", \"facet_pieces\": " << s.facet_pieces << ", \"proxy_cells\": " << s.proxy_cells << ", \"joined_cells\": " << s.joined_cells << ", \"recovered_cells\": " << s.recovered_cells << ", \"steiner_nodes\": " << s.steiner_nodes << ", \"refilled_cells\": " << s.refilled_cells
     << ", \"refilled_folds\": " << s.refilled_folds << ", \"optimize_blocks\": " << s.optimize_blocks << ", \"proxy_attempts\": " << s.proxy_attempts << ", \"placements\": " << s.placements
     << ", \"proxy_retry_reason\": " << json_string(s.proxy_retry_reason) << ", \"face_corner_retry\": " << (s.face_corner_retry ? "true" : "false")
     << ", \"times\": {\"init_geom\": " << s.init_geom << ", \"bisect\": " << s.bisect << ", \"gen_nodes\": " << s.gen_nodes

@@ -19,6 +19,7 @@ namespace bisect::tet {
 
 struct CellFillStats {
   std::int64_t inserted = 0, skipped = 0, flips = 0;
+  std::int64_t steiner = 0;  // Steiner points the fill by boundary recovery added (recovery_fill.hpp)
   bool helper = false, helper_removed = false;
 };
 

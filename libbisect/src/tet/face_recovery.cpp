@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geom/predicates.hpp"
+#include "tet/cell_fill.hpp"
 
 namespace bisect::tet {
 namespace {
@@ -152,20 +153,21 @@ bool fills(const TetComplex& dt, const std::vector<Index>& cavity, const std::ve
   return std::abs(before - after) <= 1e-9 * before;
 }
 
+// Whether the open segment ab passes through tetrahedron q's interior (crosses one of its faces).
+bool tet_pierced(const std::vector<Vec3>& X, const Tet& q, Index a, Index b, bool* degenerate) {
+  for (int f = 0; f < 4; ++f) {
+    const std::array<Index, 3> fc{q[(f + 1) % 4], q[(f + 2) % 4], q[(f + 3) % 4]};
+    if (std::count(fc.begin(), fc.end(), a) || std::count(fc.begin(), fc.end(), b)) continue;
+    if (crosses(X, a, b, fc[0], fc[1], fc[2], degenerate)) return true;
+  }
+  return false;
+}
+
 // Tetrahedra whose interior the open segment ab passes through (those with a face it crosses).
 std::vector<Index> pierced_by_edge(const TetComplex& dt, Index a, Index b, bool* degenerate) {
   std::vector<Index> out;
-  for (std::size_t t = 0; t < dt.tet.size(); ++t) {
-    if (!dt.alive[t]) continue;
-    for (int f = 0; f < 4; ++f) {
-      const auto fc = dt.face(static_cast<Index>(t), f);
-      if (std::count(fc.begin(), fc.end(), a) || std::count(fc.begin(), fc.end(), b)) continue;
-      if (crosses(dt.X, a, b, fc[0], fc[1], fc[2], degenerate)) {
-        out.push_back(static_cast<Index>(t));
-        break;
-      }
-    }
-  }
+  for (std::size_t t = 0; t < dt.tet.size(); ++t)
+    if (dt.alive[t] && tet_pierced(dt.X, dt.tet[t], a, b, degenerate)) out.push_back(static_cast<Index>(t));
   return out;
 }
 
@@ -187,7 +189,8 @@ std::vector<Index> pierced_by_triangle(const TetComplex& dt, Index a, Index b, I
   return out;
 }
 
-bool recover_edge(TetComplex& dt, Index a, Index b) {
+// The hole the open segment ab pierces, filled as a fan from a or from b.
+bool recover_edge_by_fan(TetComplex& dt, Index a, Index b) {
   bool degenerate = false;
   const std::vector<Index> cavity = pierced_by_edge(dt, a, b, &degenerate);
   if (cavity.empty() || degenerate) return false;
@@ -202,7 +205,135 @@ bool recover_edge(TetComplex& dt, Index a, Index b) {
   return false;
 }
 
-bool recover_triangle(TetComplex& dt, const std::array<Index, 3>& tri) {
+// The wanted triangles and their edges: what the second phase's changes must not take out.
+struct Held {
+  std::unordered_set<FaceKey, FaceKeyHash> faces;
+  std::set<Edge> edges;
+};
+
+// A missing edge ab whose hole no fan from a or b fills, brought closer by flips: a 2-3 flip
+// across a face ab crosses, or the removal of an edge of such a face (its ring's best
+// triangulation), kept when fewer tetrahedra are left in ab's way, until the fan fills what is
+// left. Neither takes out a wanted triangle or an edge of one. Greedy and bounded, so an edge
+// it cannot reach stays missing.
+bool recover_edge_by_flips(TetComplex& dt, Index a, Index b, const Held& held) {
+  constexpr int kSteps = 64;
+  std::set<Edge> made_edges, gone_edges;  // what the level changes made and took out: not undone by a later one
+  for (int step = 0; step < kSteps; ++step) {
+    bool degenerate = false;
+    const std::vector<Index> pierced = pierced_by_edge(dt, a, b, &degenerate);
+    if (pierced.empty() || degenerate) return false;
+    const std::size_t before = pierced.size();
+    const std::set<Index> in_way(pierced.begin(), pierced.end());
+    // Whether ab would pierce fewer tetrahedra after the change (level: no more), counted
+    // before the change is made; made when so.
+    auto trial = [&](const std::vector<Index>& old, const std::vector<Tet>& fresh, bool level) {
+      std::size_t after = before;
+      for (Index t : old) after -= in_way.count(t);
+      for (const Tet& q : fresh) {
+        bool deg = false;
+        after += tet_pierced(dt.X, q, a, b, &deg);
+        if (deg) return false;
+      }
+      if (level ? after > before : after >= before) return false;
+      dt.replace(old, fresh);
+      return true;
+    };
+    // A change that gets ab out of fewer tetrahedra is taken first; when there is none, one that
+    // leaves as many (a way round a local minimum), never taking back an earlier level change.
+    bool moved = false;
+    for (const bool level : {false, true}) {
+      std::set<Edge> tried;
+      for (std::size_t i = 0; i < pierced.size() && !moved; ++i) {
+        const Index t = pierced[i];
+        for (int f = 0; f < 4 && !moved; ++f) {
+          const auto fc = dt.face(t, f);
+          if (std::count(fc.begin(), fc.end(), a) || std::count(fc.begin(), fc.end(), b)) continue;
+          bool deg = false;
+          if (!crosses(dt.X, a, b, fc[0], fc[1], fc[2], &deg) || deg) continue;
+          const Index u = dt.neighbour(t, f);
+          if (u < 0 || held.faces.count(face_key(fc[0], fc[1], fc[2]))) continue;
+          const Edge across = edge_of(dt.tet[t][f], dt.tet[u][dt.neighbour_face(t, f)]);  // the edge a 2-3 flip makes
+          std::vector<Tet> fresh;
+          if (!(level && gone_edges.count(across)) && dt.flip23_unchecked(t, f, &fresh) && dt.positive_all(fresh) &&
+              trial({t, u}, fresh, level)) {
+            if (level) made_edges.insert(across);
+            moved = true;
+            break;
+          }
+          for (int k = 0; k < 3 && !moved; ++k) {
+            const Edge e = edge_of(fc[k], fc[(k + 1) % 3]);
+            if (held.edges.count(e) || (level && made_edges.count(e)) || !tried.insert(e).second) continue;
+            std::array<Index, TetComplex::kMaxRing> ring, apex;
+            bool closed = false, on_held = false;
+            const int n = dt.edge_ring(t, e.first, e.second, static_cast<int>(TetComplex::kMaxRing), ring.data(), apex.data(),
+                                       &closed, &on_held);
+            if (!closed || on_held || n < 3 || n > static_cast<int>(TetComplex::kMaxRing)) continue;
+            std::vector<Tet> tri;
+            if (!dt.ring_triangulation(e.first, e.second, apex.data(), static_cast<std::size_t>(n), 0, &tri)) continue;
+            moved = trial(std::vector<Index>(ring.begin(), ring.begin() + n), tri, level);
+            if (moved && level) gone_edges.insert(e);
+          }
+        }
+      }
+      if (moved) break;
+    }
+    if (!moved) return false;
+    if (recover_edge_by_fan(dt, a, b)) return true;
+  }
+  return false;
+}
+
+// A point added inside a hole (a Steiner point) when no node sees all of its faces (turned out
+// of it): a point of its kernel, found from its nodes' centroid as a star fill's centre is
+// (star_centre). Appended to *grow (the nodes dt.X refers to) and returned; -1 when the hole has
+// no kernel.
+Index steiner_point(TetComplex& dt, std::vector<Vec3>* grow, const std::vector<std::array<Index, 3>>& faces) {
+  std::set<Index> nodes;
+  for (const auto& f : faces) nodes.insert(f.begin(), f.end());
+  Vec3 centroid = Vec3::Zero();
+  for (Index v : nodes) centroid += dt.X[v];
+  centroid /= static_cast<double>(nodes.size());
+  Index node = -1;
+  Vec3 point;
+  if (!star_centre(dt.X, faces, {}, centroid, &node, &point)) return -1;
+  grow->push_back(point);
+  return static_cast<Index>(grow->size() - 1);
+}
+
+// A missing edge: the fan, then (with `held`, the second phase) the flips, then (with grow) the
+// hole of the tetrahedra in its way fanned from a Steiner point and the two tried again (a fold
+// such as Schönhardt's prism: no tetrahedralization of the nodes alone has the edge).
+bool recover_edge(TetComplex& dt, Index a, Index b, const Held* held, std::vector<Vec3>* grow) {
+  if (recover_edge_by_fan(dt, a, b)) return true;
+  if (!held) return false;
+  if (recover_edge_by_flips(dt, a, b, *held)) return true;
+  if (!grow) return false;
+  bool degenerate = false;
+  const std::vector<Index> cavity = pierced_by_edge(dt, a, b, &degenerate);
+  if (cavity.empty() || degenerate) return false;
+  // the hole's fan takes out every face inside it: not when one is a wanted triangle already there
+  const std::set<Index> in(cavity.begin(), cavity.end());
+  for (Index t : cavity)
+    for (int f = 0; f < 4; ++f) {
+      const auto fc = dt.face(t, f);
+      if (in.count(dt.neighbour(t, f)) && held->faces.count(face_key(fc[0], fc[1], fc[2]))) return false;
+    }
+  const std::vector<std::array<Index, 3>> hole = hole_faces(dt, cavity);
+  const std::size_t had = grow->size();
+  const Index s = steiner_point(dt, grow, hole);
+  std::vector<Tet> fresh;
+  if (s < 0 || !fan(dt.X, s, hole, &fresh) || !fills(dt, cavity, fresh)) {
+    grow->resize(had);
+    return false;
+  }
+  // the point stays when the edge still cannot be made: the complex is as valid with it (one
+  // outside the cell goes with the outside's tetrahedra, recovery_fill)
+  dt.replace(cavity, fresh);
+  return recover_edge_by_fan(dt, a, b) || recover_edge_by_flips(dt, a, b, *held);
+}
+
+bool recover_triangle(TetComplex& dt, const std::array<Index, 3>& tri, std::vector<Vec3>* grow) {
   const Index a = tri[0], b = tri[1], c = tri[2];
   bool degenerate = false;
   const std::vector<Index> cavity = pierced_by_triangle(dt, a, b, c, &degenerate);
@@ -228,6 +359,11 @@ bool recover_triangle(TetComplex& dt, const std::array<Index, 3>& tri) {
   up.push_back({a, c, b});
   down.push_back({a, b, c});
   std::vector<Tet> fresh;
+  const std::size_t had = grow ? grow->size() : 0;
+  auto give_up = [&] {
+    if (grow) grow->resize(had);  // the Steiner points of this try are not used
+    return false;
+  };
   for (const auto& [faces, nodes] : {std::pair{&up, &up_nodes}, std::pair{&down, &down_nodes}}) {
     bool done = false;
     for (Index apex : *nodes) {
@@ -238,16 +374,24 @@ bool recover_triangle(TetComplex& dt, const std::array<Index, 3>& tri) {
         break;
       }
     }
-    if (!done) return false;
+    if (!done && grow) {
+      const Index apex = steiner_point(dt, grow, *faces);
+      std::vector<Tet> side;
+      if (apex >= 0 && fan(dt.X, apex, *faces, &side)) {
+        fresh.insert(fresh.end(), side.begin(), side.end());
+        done = true;
+      }
+    }
+    if (!done) return give_up();
   }
-  if (!fills(dt, cavity, fresh)) return false;
+  if (!fills(dt, cavity, fresh)) return give_up();
   dt.replace(cavity, fresh);
   return true;
 }
 
 }  // namespace
 
-std::size_t recover_faces(TetComplex& dt, const std::vector<std::array<Index, 3>>& wanted) {
+std::size_t recover_faces(TetComplex& dt, const std::vector<std::array<Index, 3>>& wanted, std::vector<Vec3>* grow) {
   Present p(dt);
   std::vector<std::array<Index, 3>> missing;
   for (const auto& t : wanted)
@@ -255,8 +399,16 @@ std::size_t recover_faces(TetComplex& dt, const std::vector<std::array<Index, 3>
   // Rounds over the missing triangles, each change made at once (and what is present read
   // again), until a round changes nothing: a change can make way for a triangle that failed
   // earlier in the round, and the next round tries it again. Each attempt scans the complex, so
-  // the rounds are bounded too.
-  for (int round = 0; round < 8 && !missing.empty(); ++round) {
+  // the rounds are bounded too. The second phase (flips, Steiner points), when allowed, only in
+  // rounds after those without have done what they can.
+  Held held;
+  if (grow)
+    for (const auto& t : wanted) {
+      held.faces.insert(face_key(t[0], t[1], t[2]));
+      for (int i = 0; i < 3; ++i) held.edges.insert(edge_of(t[i], t[(i + 1) % 3]));
+    }
+  for (int round = 0, steiner_from = -1; round < 16 && !missing.empty(); ++round) {
+    std::vector<Vec3>* steiner = steiner_from >= 0 ? grow : nullptr;
     bool changed = false;
     std::vector<std::array<Index, 3>> left;
     for (const auto& t : missing) {
@@ -265,15 +417,17 @@ std::size_t recover_faces(TetComplex& dt, const std::vector<std::array<Index, 3>
       for (int i = 0; i < 3; ++i)
         if (!p.has_edge(t[i], t[(i + 1) % 3])) {
           edges = false;
-          if (recover_edge(dt, t[i], t[(i + 1) % 3])) done = true;
+          if (recover_edge(dt, t[i], t[(i + 1) % 3], steiner ? &held : nullptr, steiner)) done = true;
           break;  // one edge at a time: the next round sees the others
         }
-      if (edges) done = recover_triangle(dt, t);
+      if (edges) done = recover_triangle(dt, t, steiner);
       if (done) changed = true;
       if (!p.has_face(t[0], t[1], t[2])) left.push_back(t);
     }
     missing = std::move(left);
-    if (!changed) break;
+    if (changed && round - std::max(steiner_from, 0) < 7) continue;
+    if (steiner || !grow) break;
+    steiner_from = round + 1;  // the first phase's rounds are done: now the second's
   }
   return missing.size();
 }

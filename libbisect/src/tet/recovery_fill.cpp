@@ -14,7 +14,7 @@
 namespace bisect::tet {
 
 std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
-                                  const std::vector<Index>& interior, CellFillStats* stats) {
+                                  const std::vector<Index>& interior, CellFillStats* stats, std::vector<Vec3>* steiner) {
   CellFillStats st;
   const Index n = static_cast<Index>(X.size());
   std::vector<Index> bnodes;
@@ -54,7 +54,7 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
   }
 
   // boundary triangles that are not faces restored by local re-triangulation (face_recovery.hpp)
-  recover_faces(dt, boundary);
+  recover_faces(dt, boundary, steiner ? &Y : nullptr);
   // every boundary triangle a face, seen from the tetrahedron it bounds inside
   std::unordered_map<FaceKey, std::array<Index, 3>, FaceKeyHash> wanted;  // key -> triangle, smallest node first
   for (const auto& t : boundary) wanted[face_key(t[0], t[1], t[2])] = smallest_first(t);
@@ -99,17 +99,29 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
     }
   }
   std::vector<Tet> inside;
+  // Steiner points (Y's nodes past the box's corners) that inside tetrahedra use follow X's
+  // nodes, in the order those tetrahedra first use them; those outside the cell are dropped
+  std::vector<Index> renumber(Y.size() - (n + 4), -1);
+  std::vector<Vec3> Z = X;
   for (std::size_t t = 0; t < dt.tet.size(); ++t) {
     if (!dt.alive[t]) continue;
     if (side[t] == 0) throw MeshingError("boundary recovery: a tetrahedron is on neither side of the boundary");
     if (side[t] != 1) continue;
-    for (Index v : dt.tet[t])
-      if (v >= n) throw MeshingError("boundary recovery: the boundary is open");
-    inside.push_back(dt.tet[t]);
+    Tet q = dt.tet[t];
+    for (Index& v : q) {
+      if (v < n) continue;
+      if (v < n + 4) throw MeshingError("boundary recovery: the boundary is open");
+      Index& r = renumber[v - (n + 4)];
+      if (r < 0) r = static_cast<Index>(Z.size()), Z.push_back(Y[v]);
+      v = r;
+    }
+    inside.push_back(q);
   }
+  st.steiner = static_cast<std::int64_t>(Z.size() - X.size());
+  if (steiner) steiner->assign(Z.begin() + n, Z.end());
 
   // the interior nodes, with Delaunay cavities held by the boundary, then the min-max passes
-  TetComplex cx(X);
+  TetComplex cx(Z);
   cx.edge_removal_below = 0.060072058;  // as fill_convex_cell: the global passes do the rest
   cx.build(std::move(inside));
   st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
@@ -129,7 +141,7 @@ std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<
   st.flips += cx.improve_all(std::numeric_limits<std::int64_t>::max());
   std::vector<Tet> out = cx.tets();
   for (const Tet& t : out)
-    if (geom::orient3d(X[t[0]], X[t[1]], X[t[2]], X[t[3]]) <= 0) throw MeshingError("boundary recovery: a flat or inverted tetrahedron");
+    if (geom::orient3d(Z[t[0]], Z[t[1]], Z[t[2]], Z[t[3]]) <= 0) throw MeshingError("boundary recovery: a flat or inverted tetrahedron");
   if (stats) *stats = st;
   return out;
 }

@@ -1,7 +1,8 @@
 // A cell that no point sees whole, filled the way Delaunay meshers fill a polyhedron: its
 // boundary nodes go into a Delaunay tetrahedralization of a box around them, the boundary
-// triangles that are not faces of it are restored by local re-triangulation (face_recovery.hpp,
-// without Steiner points: the boundary is shared with the neighbouring cells), and when every
+// triangles that are not faces of it are restored by local re-triangulation (face_recovery.hpp;
+// never a point on the boundary, which is shared with the neighbouring cells, and inside only
+// where the caller allows Steiner points), and when every
 // boundary triangle is a face, the tetrahedra inside the boundary are the cell's. The interior nodes then go in with Delaunay cavities that never cross
 // the boundary, and the min-max transformations (thesis 7.5) improve the result, as in 7.6.
 //
@@ -22,7 +23,11 @@ namespace bisect::tet {
 // exactly `boundary` (interior nodes that fall outside or on another node are skipped, and
 // counted). Throws MeshingError when a boundary triangle cannot be made a face of the Delaunay
 // tetrahedralization of the boundary nodes, or the inside cannot be told from the outside.
+// steiner: null, no node is added; else Steiner points are allowed where a missing triangle's
+// hole needs one (face_recovery.hpp), and those the tetrahedra use are returned there, as nodes
+// X.size(), X.size() + 1, ... (counted in stats->steiner).
 std::vector<Tet> fill_by_recovery(const std::vector<Vec3>& X, const std::vector<std::array<Index, 3>>& boundary,
-                                  const std::vector<Index>& interior, CellFillStats* stats = nullptr);
+                                  const std::vector<Index>& interior, CellFillStats* stats = nullptr,
+                                  std::vector<Vec3>* steiner = nullptr);
 
 }  // namespace bisect::tet

@@ -15,6 +15,7 @@
 #include "geom/predicates.hpp"
 #include "tet/cell_fill.hpp"
 #include "tet/recovery_fill.hpp"
+#include "schoenhardt.hpp"
 
 namespace bisect::tet {
 namespace {
@@ -121,7 +122,7 @@ double volume(const std::vector<Vec3>& X, const Tet& t) {
   return (X[t[1]] - X[t[0]]).dot((X[t[2]] - X[t[0]]).cross(X[t[3]] - X[t[0]])) / 6;
 }
 
-void expect_filled(const Cell& c);
+void expect_filled(const Cell& c, bool steiner = false);
 
 TEST(RecoveryFill, FillsACellThatNoPointSeesWhole) {
   const Cell c = z_prism(0.25);
@@ -148,9 +149,53 @@ TEST(RecoveryFill, RestoresMostBoundaryTrianglesThatAreNotDelaunay) {
   }
 }
 
-void expect_filled(const Cell& c) {
+// With Steiner points allowed, the second phase (flips that bring a missing edge closer, then
+// points inside a hole no node sees whole) restores what the fans alone left: the same Z prism
+// with one square in seven turned against its Delaunay diagonal, 26 triangles left before.
+TEST(RecoveryFill, FlipsRestoreWhatTheFansLeft) {
+  EXPECT_NO_THROW(expect_filled(z_prism(0.25, 7), true));
+}
+
+// Schönhardt's twisted prism: no tetrahedralization of it without a point inside exists, so
+// the recovery must add one (or more), strictly inside, and the boundary must stay exactly as it is.
+TEST(RecoveryFill, AddsASteinerPointWhereNoTetrahedralizationWithoutOneExists) {
+  const test::TwistedPrism prism = test::schoenhardt_prism();
+  Cell c;
+  c.X = prism.X, c.boundary = prism.boundary;
+  // the fold is real: each side's second triangle lies outside the first's plane
+  for (int i = 0; i < 3; ++i) {
+    const auto& t = c.boundary[2 + 2 * i];
+    ASSERT_GT(geom::orient3d(c.X[t[0]], c.X[t[1]], c.X[t[2]], c.X[c.boundary[3 + 2 * i][2]]), 0) << "side " << i << " is convex";
+  }
+  EXPECT_THROW(fill_by_recovery(c.X, c.boundary, c.interior), MeshingError) << "no fill without a Steiner point";
   CellFillStats st;
-  const std::vector<Tet> tets = fill_by_recovery(c.X, c.boundary, c.interior, &st);
+  std::vector<Vec3> steiner;
+  const std::vector<Tet> tets = fill_by_recovery(c.X, c.boundary, c.interior, &st, &steiner);
+  ASSERT_GE(steiner.size(), 1u);
+  EXPECT_EQ(st.steiner, static_cast<std::int64_t>(steiner.size()));
+  std::vector<Vec3> Y = c.X;
+  Y.insert(Y.end(), steiner.begin(), steiner.end());
+  for (const Vec3& p : steiner)  // strictly inside the prism's hull, off its boundary
+    EXPECT_TRUE(p.z() > 0 && p.z() < 1 && p.head<2>().norm() < 1) << "a Steiner point outside: " << p.transpose();
+  double v = 0, want = 0;
+  std::map<std::array<Index, 3>, int> faces;
+  for (const Tet& t : tets) {
+    ASSERT_GT(geom::orient3d(Y[t[0]], Y[t[1]], Y[t[2]], Y[t[3]]), 0);
+    v += volume(Y, t);
+    for (const auto& f : std::array<std::array<int, 3>, 4>{{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}}) ++faces[smallest_first({t[f[0]], t[f[1]], t[f[2]]})];
+  }
+  for (const auto& t : c.boundary) {
+    want += c.X[t[0]].dot(c.X[t[1]].cross(c.X[t[2]])) / 6;  // the divergence theorem
+    EXPECT_EQ(faces.count(smallest_first(t)) ? faces.at(smallest_first(t)) : 0, 1) << "a boundary triangle lost";
+  }
+  EXPECT_NEAR(v, want, 1e-12);
+}
+
+void expect_filled(const Cell& c, bool steiner) {
+  CellFillStats st;
+  std::vector<Vec3> added;
+  const std::vector<Tet> tets = fill_by_recovery(c.X, c.boundary, c.interior, &st, steiner ? &added : nullptr);
+  ASSERT_TRUE(added.empty()) << "the Z prism needs no Steiner point";
   double v = 0;
   std::map<std::array<Index, 3>, int> faces;  // each face, oriented out of its tetrahedron
   for (const Tet& t : tets) {
