@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -44,7 +45,7 @@ void drop_two_sided(std::vector<std::array<Index, 3>>& boundary) {
 }
 
 // Why no fill takes cell c, when its boundary crosses itself: which grids pass through each other,
-// and where (the B-rep face of each triangle, or a cut between cells); empty when it does not.
+// and where (the B-rep face of each triangle, or a cut face); empty when it does not.
 std::string crossing_reason(const CellJob& job, const BrepGrids& g, Index c, const std::vector<Vec3>& X) {
   const std::optional<tet::BoundaryCrossing> x = tet::boundary_crossing(X, job.boundary);
   if (!x) return {};
