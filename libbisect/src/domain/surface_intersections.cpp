@@ -4,11 +4,13 @@
 #include <array>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
+#include <vector>
 
 #include "bisect/errors.hpp"
+#include "geom/box_grid.hpp"
 #include "geom/loop_triangulation.hpp"
 #include "geom/predicates.hpp"
+#include "geom/segment_triangle.hpp"
 
 namespace bisect {
 namespace {
@@ -108,13 +110,10 @@ bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const V
     *where = 0.5 * (p + q);
     return segments_meet_2d(P, Q, A, B) || segments_meet_2d(P, Q, B, C) || segments_meet_2d(P, Q, C, A);
   }
-  const int o1 = orient3d(p, q, a, b), o2 = orient3d(p, q, b, c), o3 = orient3d(p, q, c, a);
-  const bool in = (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
-  if (!in) return false;
-  *proper = sp * sq < 0 && o1 != 0 && o2 != 0 && o3 != 0;
-  const Vec3 n = (b - a).cross(c - a);
-  const double dp = n.dot(p - a), dq = n.dot(q - a);
-  *where = dp == dq ? p : Vec3(p + dp / (dp - dq) * (q - p));
+  const int edges = geom::line_through_triangle(p, q, a, b, c);
+  if (edges < 0) return false;
+  *proper = sp * sq < 0 && edges == 0;
+  *where = geom::plane_meeting(p, q, a, b, c);
   return true;
 }
 
@@ -174,46 +173,24 @@ std::vector<FaceIntersection> find_surface_intersections(const PolyInput& in, st
   for (const Tri& t : tris) lo = lo.cwiseMin(t.lo), hi = hi.cwiseMax(t.hi), mean += (t.hi - t.lo).maxCoeff();
   mean /= static_cast<double>(tris.size());
   const double cell = std::max(mean * 1.5, (hi - lo).maxCoeff() / 512 + 1e-300);
-  auto key = [](long long i, long long j, long long k) { return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791); };
-  auto coord = [&](double x, double o) { return static_cast<long long>(std::floor((x - o) / cell)); };
-  struct Cell {
-    long long i, j, k;
-    std::vector<int> tris;
-  };
-  std::unordered_map<long long, std::vector<Cell>> grid;
-  auto cell_at = [&](long long i, long long j, long long k) -> Cell& {
-    auto& bucket = grid[key(i, j, k)];
-    for (Cell& c : bucket)
-      if (c.i == i && c.j == j && c.k == k) return c;
-    bucket.push_back({i, j, k, {}});
-    return bucket.back();
-  };
-  for (std::size_t t = 0; t < tris.size(); ++t)
-    for (long long i = coord(tris[t].lo.x(), lo.x()); i <= coord(tris[t].hi.x(), lo.x()); ++i)
-      for (long long j = coord(tris[t].lo.y(), lo.y()); j <= coord(tris[t].hi.y(), lo.y()); ++j)
-        for (long long k = coord(tris[t].lo.z(), lo.z()); k <= coord(tris[t].hi.z(), lo.z()); ++k)
-          cell_at(i, j, k).tris.push_back(static_cast<int>(t));
-  std::size_t found = 0;
-  for (const auto& [h, bucket] : grid)
-    for (const Cell& c : bucket)
-      for (std::size_t x = 0; x < c.tris.size(); ++x)
-        for (std::size_t y = x + 1; y < c.tris.size(); ++y) {
-          const Tri &s = tris[c.tris[x]], &t = tris[c.tris[y]];
-          if (s.face == t.face) continue;
-          if ((s.hi.array() < t.lo.array()).any() || (t.hi.array() < s.lo.array()).any()) continue;
-          // each pair once: in the cell holding the low corner of the boxes' overlap
-          const Vec3 corner = s.lo.cwiseMax(t.lo);
-          if (coord(corner.x(), lo.x()) != c.i || coord(corner.y(), lo.y()) != c.j || coord(corner.z(), lo.z()) != c.k) continue;
-          FaceIntersection hit;
-          if (triangles_meet(in, s, t, &hit)) {
-            if (hit.face_a > hit.face_b) std::swap(hit.face_a, hit.face_b);
-            bool dup = false;
-            for (const auto& o : out) dup |= o.face_a == hit.face_a && o.face_b == hit.face_b;
-            if (dup) continue;
-            ++found;
-            if (out.size() < max_reports) out.push_back(hit);
-          }
-        }
+  geom::BoxGrid grid(lo, cell);
+  for (std::size_t t = 0; t < tris.size(); ++t) grid.insert(t, tris[t].lo, tris[t].hi);
+  grid.for_each_box([&](const geom::BoxGrid::Coord& at, const std::vector<std::size_t>& listed) {
+    for (std::size_t x = 0; x < listed.size(); ++x)
+      for (std::size_t y = x + 1; y < listed.size(); ++y) {
+        const Tri &s = tris[listed[x]], &t = tris[listed[y]];
+        if (s.face == t.face) continue;
+        if ((s.hi.array() < t.lo.array()).any() || (t.hi.array() < s.lo.array()).any()) continue;
+        // each pair once: in the box holding the low corner of the boxes' overlap
+        if (grid.box_of(s.lo.cwiseMax(t.lo)) != at) continue;
+        FaceIntersection hit;
+        if (!triangles_meet(in, s, t, &hit)) continue;
+        if (hit.face_a > hit.face_b) std::swap(hit.face_a, hit.face_b);
+        bool dup = false;
+        for (const auto& o : out) dup |= o.face_a == hit.face_a && o.face_b == hit.face_b;
+        if (!dup && out.size() < max_reports) out.push_back(hit);
+      }
+  });
   return out;
 }
 

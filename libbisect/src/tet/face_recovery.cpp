@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geom/predicates.hpp"
+#include "geom/segment_triangle.hpp"
 #include "tet/cell_fill.hpp"
 
 namespace bisect::tet {
@@ -86,14 +87,9 @@ class Present {
 // then every tetrahedron at the edge is pierced, and each has a face that says so); through a
 // corner, `degenerate` is set.
 bool crosses(const std::vector<Vec3>& X, Index p, Index q, Index a, Index b, Index c, bool* degenerate) {
-  const int sp = orient3d(X[a], X[b], X[c], X[p]), sq = orient3d(X[a], X[b], X[c], X[q]);
-  if (sp == 0 || sq == 0 || sp == sq) return false;
-  const int s1 = orient3d(X[p], X[q], X[a], X[b]), s2 = orient3d(X[p], X[q], X[b], X[c]), s3 = orient3d(X[p], X[q], X[c], X[a]);
-  const bool nonneg = s1 >= 0 && s2 >= 0 && s3 >= 0, nonpos = s1 <= 0 && s2 <= 0 && s3 <= 0;
-  if (!nonneg && !nonpos) return false;
-  const int zeros = (s1 == 0) + (s2 == 0) + (s3 == 0);
-  if (zeros >= 2) *degenerate = true;
-  return zeros <= 1;
+  const int edges = geom::segment_through_triangle(X[p], X[q], X[a], X[b], X[c]);
+  if (edges >= 2) *degenerate = true;
+  return edges == 0 || edges == 1;
 }
 
 // The hole's faces, each turned out of the hole (as face() of the tetrahedron taken out gives).
