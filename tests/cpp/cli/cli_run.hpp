@@ -8,6 +8,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -39,6 +41,23 @@ inline fs::path scratch_dir(const std::string& tag) {
   fs::create_directories(d);
   return d;
 }
+
+// The scratch folders go when the test process ends, unless a test failed: then they stay, for
+// the one who looks into it (ctest runs each test in a process of its own).
+class ScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    if (::testing::UnitTest::GetInstance()->Failed()) return;
+    const std::string mine = "_" + std::to_string(::getpid());
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("bisect_cli_", 0) == 0 && name.size() > mine.size() && name.compare(name.size() - mine.size(), mine.size(), mine) == 0)
+        fs::remove_all(e.path(), ec);
+    }
+  }
+};
+inline ::testing::Environment* const kScratchCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
 
 inline int count_lines(const std::string& s) {
   int n = 0;
