@@ -188,8 +188,10 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         // back to the cell alone for the last two ways
         const std::size_t joined_with = members[root].size() - 1;
         group = group_before, members = members_before, counts->joined = joined_before;
-        // the cell alone, by Delaunay boundary recovery: no point need see it whole
-        CellJob recovered = job_of(static_cast<Index>(c));
+        // the cell alone, by Delaunay boundary recovery: no point need see it whole (its job made
+        // once for the last three ways)
+        const CellJob cell_alone = job_of(static_cast<Index>(c));
+        CellJob recovered = cell_alone;
         recovered.recover = true;
         if (fill_job_works(recovered, X, &P, delaunay)) {
           recover[c] = 1;
@@ -197,7 +199,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         }
         // the last resort: the cell alone, filled in the proxy, what stays inverted left for the
         // global optimisation
-        CellJob alone = job_of(static_cast<Index>(c));
+        CellJob alone = cell_alone;
         alone.in_proxy = alone.keep_inverted = true;
         if (fill_job_works(alone, X, &P, delaunay)) {
           last_resort[c] = 1;
@@ -206,7 +208,7 @@ std::vector<CellJob> brep_cell_jobs(const BrepInput& in, const Decomposition& d,
         // after the last resort: boundary recovery with its second phase, flips that take the
         // tetrahedra out of a missing edge's way and points added inside (face_recovery.hpp);
         // after it, so that every cell the other fills take is filled as before
-        CellJob more = job_of(static_cast<Index>(c));
+        CellJob more = cell_alone;
         more.recover = more.steiner = true;
         if (fill_job_works(more, X, &P, delaunay)) {
           recover[c] = 2;
