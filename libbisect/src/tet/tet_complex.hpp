@@ -147,8 +147,13 @@ class TetComplex {
   // it stopped are searched, not the whole complex (for a point placed beside a tetrahedron,
   // which may lie outside the mesh: a whole search cost 0.15 s at 10^6 each time): those whose
   // centroid lies within twice the longest edge of `start` and of the walk's last tetrahedron,
-  // plus start's own distance, of p, and at most kNearSearch of them.
-  static constexpr std::size_t kNearSearch = 4096;
+  // plus start's own distance, of p, and at most kNearSearch of them. Every holder the search
+  // found (the sliver repair's trials on lug, flange and part at 10^5, corpus Zylkopf, x_ring and
+  // Kurbelwelle at 2*10^4) was among the first 26 it tried; where the bound held thousands of
+  // long flat tetrahedra (a wall 0.05 thick gridded at 2.9: 3,167 searches went to 4,096, 19
+  // million tetrahedra tried in all, 9 of a 12.8 s run in the sliver repair) they were tried in
+  // vain, so the count is cut at ten times that.
+  static constexpr std::size_t kNearSearch = 256;
   Index locate(const Vec3& p, Index start, bool near_only = false) const;
   // How many tetrahedra the last locate's near search tried (0 when its walk settled): for
   // the tests, which hold the search near.
