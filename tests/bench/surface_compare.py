@@ -11,7 +11,8 @@ radius 5, wall 1, length 50, at its shipped 2,869 tetrahedra asked: the wall cap
 plate (50 x 20 x 1 at 500 asked) or frustum (Part.makeCone(10, 3, 30) at 3,000 asked: a full
 conical side whose seam has proxy nodes along it) or spring (a circle of radius 3 swept along a
 helix of radius 15, pitch 20 and height 60 by makePipeShell, at 30,000 asked: a B-spline face
-whose proxy the linear deflection governed).)
+whose proxy the linear deflection governed) or slot (a cylinder of radius 10 with a slot cut 0.05
+from its wall, at 5,000 asked: the wall caps the size).)
 Gmsh's CharacteristicLengthMax is searched until its count is within 10% of BisectMesh's.
 """
 
@@ -53,6 +54,12 @@ def tube():
     return Part.makeCylinder(5, 50).cut(Part.makeCylinder(4, 50))
 
 
+def slotted_cylinder():
+    """Radius 10, height 5, a slot [8, 9.9] x [-1, 1] from z = 2 up: its end wall 0.05 to 0.1
+    from the cylinder's, thinner than the facets of the cylinder's proxy stand off it."""
+    return Part.makeCylinder(10, 5).cut(Part.makeBox(1.9, 2, 4, FreeCAD.Vector(8, -1, 2)))
+
+
 # name -> (shape maker, elements asked, Gmsh's first length, picture)
 SHAPES = {
     "box-hole": (box_with_hole_and_fillets, ELEMENTS, 4.0, "box-hole-fillets.png"),
@@ -60,6 +67,7 @@ SHAPES = {
     "plate": (lambda: Part.makeBox(50, 20, 1), 500, 1.0, "thin-plate.png"),
     "frustum": (lambda: Part.makeCone(10, 3, 30), 3000, 2.4, "frustum.png"),
     "spring": (helical_spring, 30000, 1.5, "spring.png"),
+    "slot": (slotted_cylinder, 5000, 1.0, "slotted-cylinder.png"),
 }
 
 

@@ -31,7 +31,9 @@ TetMesh assemble_brep_mesh(const BrepGrids& g, const tet::TetComplex& cx, const 
 // its Jacobian, under 1e-10 times its longest edge cubed (a regular tetrahedron: 0.71; a 0.1
 // degree sliver: about 1e-3; corpus/Cone_1.brep's first proxy once left one of 1e-15 at the
 // apex, smallest dihedral angle 1e-13 degrees, which the order-2 check refused while the 4-node
-// mesh kept it).
+// mesh kept it). And when a face is shared by three tetrahedra or more (two overlap there:
+// corpus/Kurbelwelle.brep at 2*10^4, order 2, once its walls were measured between the true
+// surfaces, came out so on its first proxy, which the validator refuses).
 void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m);
 
 }  // namespace bisect::pipeline

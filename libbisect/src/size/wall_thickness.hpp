@@ -6,8 +6,10 @@
 // sides, which are not in line, and many of them come out flat (a 1 mm tube wall at spacing 1.2
 // to 1.7: 6 to 12% of the tetrahedra under 10 degrees; at spacing 1, none).
 //
-// Measured on the tessellation (the proxy's facets): the thickness is off by at most the
-// tessellation's deflection, which is a small part of any size it asks for. A ray is not stopped
+// Found on the tessellation (the proxy's facets), and measured between the true surfaces where
+// it is under twice the limit: from the start's and the exit's points of their faces' surfaces
+// nearest the facets' points, along the ray. On the facets alone it was off by up to the
+// tessellation's deflection, which can be most of a thin wall's thickness. A ray is not stopped
 // by a face that shares a B-rep vertex with the face it starts from: beside an edge where two
 // faces meet at an acute angle that distance goes to nought and asks for ever smaller elements,
 // which the edge's angle bounds anyway (Angled.step came out with a tetrahedron inside out).
