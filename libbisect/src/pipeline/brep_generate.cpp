@@ -397,12 +397,8 @@ TetMesh optimise_and_assemble(const BrepInput& in, const GenerateOptions& opt, p
   if (progress && !progress(kBar.optimized)) throw Cancelled();
   util::ProgressPoll assembly_poll(progress);
   assembly_poll.at(kBar.optimized);
-  TetMesh out = pipeline::assemble_brep_mesh(best->grids, cx, best->X, in, opt.order, &st->straightened_edges,
-                                             [&assembly_poll] { return assembly_poll.cancelled(); });
-  // no mesh leaves inside out, or with a tetrahedron flat to round-off: a stage's slip is an
-  // error naming the place (and the next proxy is tried), not a bad mesh
-  pipeline::refuse_degenerate_tets(in, out);
-  return out;
+  return pipeline::assemble_brep_mesh(best->grids, cx, best->X, in, opt.order, &st->straightened_edges,
+                                      [&assembly_poll] { return assembly_poll.cancelled(); });
 }
 
 }  // namespace
@@ -588,6 +584,10 @@ TetMesh generate_connected_solids(const BrepInput& in, const GenerateOptions& op
     // the optimisation and the assembly inside the attempt: a fold the last resort left that its
     // refill cannot mend (optimize/inverted_refill.hpp) sends the route on to the next proxy
     out = optimise_and_assemble(in, opt, &best, filled, &st, progress);
+    // no mesh leaves inside out, with a tetrahedron flat to round-off or with a face of three: a
+    // stage's slip is an error naming the place (and the next proxy is tried), not a bad mesh;
+    // checked once the complex is gone (the faces' table is 32 bytes a tetrahedron)
+    pipeline::refuse_degenerate_tets(in, out);
       break;
     } catch (const MeshingError& e) {
       if (first_error.empty()) first_error = e.what();

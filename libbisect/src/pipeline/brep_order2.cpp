@@ -209,7 +209,7 @@ void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m) {
   }
   // Faces of three tetrahedra: every face filed under its smallest node (a counting sort, no
   // hash), then each node's faces compared by their other two nodes. 10^6 tetrahedra: 4·10^6
-  // faces in two passes over the elements.
+  // faces in two passes over the elements, 8 bytes each.
   const std::size_t n = m.nodes.size(), tets = m.num_tets();
   std::vector<std::uint32_t> first(n + 1, 0);
   const auto face_of = [&](std::size_t t, int f) {
@@ -222,25 +222,28 @@ void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m) {
   for (std::size_t t = 0; t < tets; ++t)
     for (int f = 0; f < 4; ++f) ++first[face_of(t, f)[0] + 1];
   for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  struct Entry {
-    Index b, c;
-    std::uint32_t t;
-  };
-  std::vector<Entry> filed(first[n]);
+  std::vector<std::array<Index, 2>> filed(first[n]);  // per face: its other two nodes
   std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
   for (std::size_t t = 0; t < tets; ++t)
     for (int f = 0; f < 4; ++f) {
       const std::array<Index, 3> k = face_of(t, f);
-      filed[fill[k[0]]++] = {k[1], k[2], static_cast<std::uint32_t>(t)};
+      filed[fill[k[0]]++] = {k[1], k[2]};
     }
+  fill = {};
   for (std::size_t v = 0; v < n; ++v) {
     const auto lo = filed.begin() + first[v], hi = filed.begin() + first[v + 1];
-    std::sort(lo, hi, [](const Entry& x, const Entry& y) { return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.t < y.t); });
+    std::sort(lo, hi);
     for (auto it = lo; it + 2 < hi; ++it) {
-      if (it->b != (it + 2)->b || it->c != (it + 2)->c) continue;
-      const std::size_t t = it->t;
-      const Vec3 mid = (m.nodes[v] + m.nodes[it->b] + m.nodes[it->c]) / 3;
-      throw MeshingError(in.source + ": " + solid_name(in, m.region[t]) + ": the face at " + point_name(mid) +
+      if (*it != *(it + 2)) continue;
+      const std::array<Index, 3> face{static_cast<Index>(v), (*it)[0], (*it)[1]};
+      Index region = 0;  // the solid of a tetrahedron on it (found only here, on the way out)
+      for (std::size_t t = 0; t < tets; ++t)
+        if (face_of(t, 0) == face || face_of(t, 1) == face || face_of(t, 2) == face || face_of(t, 3) == face) {
+          region = m.region[t];
+          break;
+        }
+      const Vec3 mid = (m.nodes[face[0]] + m.nodes[face[1]] + m.nodes[face[2]]) / 3;
+      throw MeshingError(in.source + ": " + solid_name(in, region) + ": the face at " + point_name(mid) +
                          " is shared by three tetrahedra or more (they overlap: a defect of the mesher)");
     }
   }

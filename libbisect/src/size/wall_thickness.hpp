@@ -7,9 +7,9 @@
 // to 1.7: 6 to 12% of the tetrahedra under 10 degrees; at spacing 1, none).
 //
 // Found on the tessellation (the proxy's facets), and measured between the true surfaces where
-// it is under twice the limit: from the start's and the exit's points of their faces' surfaces
-// nearest the facets' points, along the ray. On the facets alone it was off by up to the
-// tessellation's deflection, which can be most of a thin wall's thickness. A ray is not stopped
+// it is under twice the limit: from where the ray's line meets the start's face to where it
+// meets the exit's (Newton steps from the facets' points). On the facets alone it was off by up
+// to the tessellation's deflection, which can be most of a thin wall's thickness. A ray is not stopped
 // by a face that shares a B-rep vertex with the face it starts from: beside an edge where two
 // faces meet at an acute angle that distance goes to nought and asks for ever smaller elements,
 // which the edge's angle bounds anyway (Angled.step came out with a tetrahedron inside out).
