@@ -10,6 +10,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "tet/face_file.hpp"
 #include "bisect/validate.hpp"
 
 namespace bisect::pipeline {
@@ -207,46 +208,20 @@ void refuse_degenerate_tets(const BrepInput& in, const TetMesh& m) {
       throw MeshingError(where + "the tetrahedron at " + point_name((a + b + c + d) / 4) +
                          " is flat to round-off: a solver's Jacobian there is noise (a defect of the mesher)");
   }
-  // Faces of three tetrahedra: every face filed under its smallest node (a counting sort, no
-  // hash), then each node's faces compared by their other two nodes. 10^6 tetrahedra: 4·10^6
-  // faces in two passes over the elements, 8 bytes each.
-  const std::size_t n = m.nodes.size(), tets = m.num_tets();
-  std::vector<std::uint32_t> first(n + 1, 0);
-  const auto face_of = [&](std::size_t t, int f) {
-    std::array<Index, 3> k{};
-    for (int i = 0, j = 0; i < 4; ++i)
-      if (i != f) k[j++] = m.tet_node(t, i);
-    std::sort(k.begin(), k.end());
-    return k;
-  };
-  for (std::size_t t = 0; t < tets; ++t)
-    for (int f = 0; f < 4; ++f) ++first[face_of(t, f)[0] + 1];
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  std::vector<std::array<Index, 2>> filed(first[n]);  // per face: its other two nodes
-  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-  for (std::size_t t = 0; t < tets; ++t)
-    for (int f = 0; f < 4; ++f) {
-      const std::array<Index, 3> k = face_of(t, f);
-      filed[fill[k[0]]++] = {k[1], k[2]};
-    }
-  fill = {};
-  for (std::size_t v = 0; v < n; ++v) {
-    const auto lo = filed.begin() + first[v], hi = filed.begin() + first[v + 1];
-    std::sort(lo, hi);
-    for (auto it = lo; it + 2 < hi; ++it) {
-      if (*it != *(it + 2)) continue;
-      const std::array<Index, 3> face{static_cast<Index>(v), (*it)[0], (*it)[1]};
-      Index region = 0;  // the solid of a tetrahedron on it (found only here, on the way out)
-      for (std::size_t t = 0; t < tets; ++t)
-        if (face_of(t, 0) == face || face_of(t, 1) == face || face_of(t, 2) == face || face_of(t, 3) == face) {
-          region = m.region[t];
-          break;
-        }
-      const Vec3 mid = (m.nodes[face[0]] + m.nodes[face[1]] + m.nodes[face[2]]) / 3;
-      throw MeshingError(in.source + ": " + solid_name(in, region) + ": the face at " + point_name(mid) +
-                         " is shared by three tetrahedra or more (they overlap: a defect of the mesher)");
-    }
-  }
+  // Faces of three tetrahedra (face_file.hpp): 10^6 tetrahedra, 4*10^6 faces of 12 bytes.
+  const tet::FaceFile file = tet::file_faces(
+      m.nodes.size(), m.num_tets(), 1,
+      [&](std::size_t t, std::array<Index, 4>& v) {
+        for (int k = 0; k < 4; ++k) v[static_cast<std::size_t>(k)] = m.tet_node(t, k);
+        return true;
+      },
+      [] {});
+  tet::for_each_face(file, 0, file.nodes(), [&](Index a, const tet::FiledFace* i, const tet::FiledFace* j) {
+    if (j - i < 3) return;
+    const Vec3 mid = (m.nodes[static_cast<std::size_t>(a)] + m.nodes[static_cast<std::size_t>(i->b)] + m.nodes[static_cast<std::size_t>(i->c)]) / 3;
+    throw MeshingError(in.source + ": " + solid_name(in, m.region[static_cast<std::size_t>(i->tf / 4)]) + ": the face at " + point_name(mid) +
+                       " is shared by three tetrahedra or more (they overlap: a defect of the mesher)");
+  });
 }
 
 }  // namespace bisect::pipeline

@@ -11,13 +11,13 @@
 #include "bisect/quality.hpp"
 #include "bisect/tet_mesh.hpp"
 #include "geom/predicates.hpp"
+#include "tet/face_file.hpp"
 #include "util/parallel_chunks.hpp"
 
 namespace bisect::tet {
 
 namespace {
 constexpr std::size_t kChunk = 32768;  // tetrahedra per chunk of build() and constrain() on the threads
-constexpr std::size_t kSortParts = 4;  // at most this many parts in build()'s counting sort
 // the step poll() always asks the cancel hook at: between the chunked steps, on this thread
 constexpr std::size_t kPollNow = TetComplex::kPollEvery - 1;
 }  // namespace
@@ -61,73 +61,23 @@ void TetComplex::build(std::vector<Tet> tets, std::vector<Index> tags, int threa
   failed_.clear();
   flip_failed_.clear();
   free_.clear();
-  // Faces matched through their smallest node: a counting sort of the faces by it, then each
-  // node's few dozen faces sorted by their other two nodes and their id (4 t + f), so that
-  // equal faces meet in the order of the tetrahedra. A hash map of the open faces cost 1.2 s
-  // at 10^6 tetrahedra, a tenth of the run.
-  const Index nodes = static_cast<Index>(X.size());  // every corner is a node of X
-  struct Half {
-    Index b, c, tf;  // the face's two larger nodes, and 4 * tetrahedron + face
-  };
-  // Each face goes to its smallest node's run of `half`, as a counting sort. On several threads
-  // each part of the tetrahedra counts its own faces per node and writes them from its own
-  // offsets (the scatter is a quarter of a second at 10^6 on one thread, bound by memory);
-  // within a run the faces lie in tetrahedron order for any number of parts, and are sorted
-  // below anyway. Each part keeps a count per node, so the parts are at most kSortParts: on a
-  // machine of many cores one per thread would cost as much memory as the complex itself (64
-  // parts at 5*10^6 tetrahedra: 230 MB), for a scatter that memory bounds anyway.
-  const std::size_t parts = std::min<std::size_t>(kSortParts, static_cast<std::size_t>(std::max(1, util::thread_count(threads))));
-  const std::size_t per_part = std::max<std::size_t>(1, (tet.size() + parts - 1) / parts);
-  const std::size_t n_parts = (tet.size() + per_part - 1) / per_part;
-  std::vector<std::vector<Index>> at(n_parts, std::vector<Index>(static_cast<std::size_t>(nodes) + 1, 0));
-  util::parallel_chunks(tet.size(), threads, per_part, [&](std::size_t from, std::size_t to) {
-    std::vector<Index>& count = at[from / per_part];
-    for (std::size_t t = from; t < to; ++t)
-      for (int f = 0; f < 4; ++f) {
-        const auto fv = face(static_cast<Index>(t), f);
-        ++count[static_cast<std::size_t>(std::min({fv[0], fv[1], fv[2]}))];
+  // Faces matched through their smallest node (face_file.hpp); equal faces pair up in the
+  // order of their tetrahedra (a third equal face pairs with a fourth). Every slot of adj is
+  // written by one node's run alone, so the pairing too runs in chunks on the threads.
+  const FaceFile file = file_faces(
+      X.size(), tet.size(), threads,  // every corner is a node of X
+      [&](std::size_t t, std::array<Index, 4>& v) {
+        v = tet[t];
+        return true;
+      },
+      [&] { poll(kPollNow); });
+  util::parallel_chunks(X.size(), threads, kChunk / 8, [&](std::size_t from, std::size_t to) {
+    for_each_face(file, from, to, [&](Index, const FiledFace* h, const FiledFace* end) {
+      for (; h + 1 < end; h += 2) {  // tf is 4 t + f already: the way back comes free
+        adj[h->tf / 4][h->tf % 4] = (h + 1)->tf;
+        adj[(h + 1)->tf / 4][(h + 1)->tf % 4] = h->tf;
       }
-  });
-  poll(kPollNow);
-  // first[v]: where node v's run starts; at[p][v]: where part p writes its first face of v
-  std::vector<Index> first(static_cast<std::size_t>(nodes) + 1, 0);
-  for (std::size_t v = 0; v < static_cast<std::size_t>(nodes); ++v) {
-    Index next = first[v];
-    for (std::vector<Index>& count : at) {
-      const Index c = count[v];
-      count[v] = next;
-      next += c;
-    }
-    first[v + 1] = next;
-  }
-  std::vector<Half> half(4 * tet.size());
-  util::parallel_chunks(tet.size(), threads, per_part, [&](std::size_t from, std::size_t to) {
-    std::vector<Index>& next = at[from / per_part];
-    for (std::size_t t = from; t < to; ++t)
-      for (int f = 0; f < 4; ++f) {
-        const auto fv = face(static_cast<Index>(t), f);
-        const FaceKey k = face_key(fv[0], fv[1], fv[2]);
-        half[static_cast<std::size_t>(next[k.a]++)] = Half{k.b, k.c, static_cast<Index>(4 * t + f)};
-      }
-  });
-  // each node's faces on their own: a face is paired within its smallest node's run, so every
-  // slot of nb is written by one node's run alone
-  poll(kPollNow);
-  util::parallel_chunks(static_cast<std::size_t>(nodes), threads, kChunk / 8, [&](std::size_t from_node, std::size_t to_node) {
-    for (std::size_t v = from_node; v < to_node; ++v) {
-      const auto from = half.begin() + first[v], to = half.begin() + first[v + 1];
-      std::sort(from, to, [](const Half& x, const Half& y) { return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.tf < y.tf; });
-      for (auto h = from; h != to && h + 1 != to;) {
-        if (h->b == (h + 1)->b && h->c == (h + 1)->c) {  // a pair: neighbours (a third equal face pairs with a fourth)
-          const Index t = h->tf / 4, u = (h + 1)->tf / 4;
-          adj[t][h->tf % 4] = (h + 1)->tf;  // tf is 4 t + f already: the way back comes free
-          adj[u][(h + 1)->tf % 4] = h->tf;
-          h += 2;
-        } else {
-          ++h;
-        }
-      }
-    }
+    });
   });
 }
 

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "bisect/errors.hpp"
+#include "tet/face_file.hpp"
 #include "util/edge_key.hpp"
 
 namespace bisect {
@@ -32,71 +33,24 @@ Index TetMesh::add_tet(const Index* v, Index region_id) {
   return Index(t);
 }
 
-namespace {
-
-// A face as its two larger node indices plus the face code 4*t + f; the smallest node index is
-// the bucket it sits in. 12 bytes, no heap object per face.
-struct FaceRecord {
-  Index mid, hi, code;
-};
-
-}  // namespace
-
 std::vector<Index> TetMesh::neighbours() const {
-  const std::size_t nt = num_tets();
-  const std::size_t nn = nodes.size();
-  std::vector<Index> neigh(4 * nt, -1);
-
-  // Sort the faces by their sorted node triple. A counting sort on the smallest node puts the
-  // faces into one short bucket per node (about 24 faces in a typical mesh), and each bucket is
-  // then sorted on the remaining two nodes: O(n) scatter plus short sorts, cache friendly.
-  auto sorted_face = [&](std::size_t t, int f, Index& a, Index& b, Index& c) {
-    a = tet_node(t, kTetFace[f][0]);
-    b = tet_node(t, kTetFace[f][1]);
-    c = tet_node(t, kTetFace[f][2]);
-    if (a > b) std::swap(a, b);
-    if (b > c) std::swap(b, c);
-    if (a > b) std::swap(a, b);
-    // Faces naming a node that does not exist stay on the boundary; the validator reports them.
-    return a >= 0 && std::size_t(c) < nn;
-  };
-
-  std::vector<Index> start(nn + 1, 0);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int f = 0; f < 4; ++f) {
-      Index a, b, c;
-      if (sorted_face(t, f, a, b, c)) ++start[a + 1];
-    }
-  for (std::size_t n = 0; n < nn; ++n) start[n + 1] += start[n];
-
-  std::vector<FaceRecord> faces(start[nn]);
-  std::vector<Index> fill(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int f = 0; f < 4; ++f) {
-      Index a, b, c;
-      if (sorted_face(t, f, a, b, c)) faces[fill[a]++] = FaceRecord{b, c, Index(4 * t + f)};
-    }
-  // Ties broken by code, so that of a face shared by more than two tetrahedra the two lowest
-  // codes pair up: deterministic, as the header promises "the first pair".
-  auto less = [](const FaceRecord& x, const FaceRecord& y) {
-    if (x.mid != y.mid) return x.mid < y.mid;
-    if (x.hi != y.hi) return x.hi < y.hi;
-    return x.code < y.code;
-  };
-  auto same_face = [&](std::size_t i, std::size_t j) { return faces[i].mid == faces[j].mid && faces[i].hi == faces[j].hi; };
-  for (std::size_t n = 0; n < nn; ++n) {
-    const std::size_t first = start[n], last = start[n + 1];
-    if (last - first > 1) std::sort(faces.begin() + first, faces.begin() + last, less);
-    for (std::size_t i = first; i < last;) {
-      std::size_t j = i + 1;
-      while (j < last && same_face(i, j)) ++j;
-      if (j - i >= 2) {  // of a longer run only the first pair is linked
-        neigh[faces[i].code] = faces[i + 1].code;
-        neigh[faces[i + 1].code] = faces[i].code;
-      }
-      i = j;
-    }
-  }
+  // Faces matched through their smallest node (face_file.hpp). Faces naming a node that does
+  // not exist stay on the boundary (the validator reports them). Of a face shared by more than
+  // two tetrahedra only the first pair, the two lowest codes, is linked: deterministic, as the
+  // header promises.
+  std::vector<Index> neigh(4 * num_tets(), -1);
+  const tet::FaceFile file = tet::file_faces(
+      nodes.size(), num_tets(), 1,
+      [&](std::size_t t, std::array<Index, 4>& v) {
+        for (int k = 0; k < 4; ++k) v[static_cast<std::size_t>(k)] = tet_node(t, k);
+        return true;
+      },
+      [] {});
+  tet::for_each_face(file, 0, file.nodes(), [&](Index, const tet::FiledFace* i, const tet::FiledFace* end) {
+    if (end - i < 2) return;
+    neigh[static_cast<std::size_t>(i[0].tf)] = i[1].tf;
+    neigh[static_cast<std::size_t>(i[1].tf)] = i[0].tf;
+  });
   return neigh;
 }
 

@@ -15,6 +15,7 @@
 
 #include "bisect/errors.hpp"
 #include "geom/predicates.hpp"
+#include "tet/face_file.hpp"
 #include "util/progress_poll.hpp"
 #include "util/edge_key.hpp"
 
@@ -53,11 +54,6 @@ std::string num(std::int64_t x) {
 }
 
 std::string point(const Vec3& p) { return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")"; }
-
-// A face of a tetrahedron by its sorted corner nodes; t is the tetrahedron.
-struct FaceRecord {
-  Index a, b, c, t;
-};
 
 // An edge of a tetrahedron by its sorted corner nodes packed into one key, with the mid-edge
 // node the tetrahedron puts on it.
@@ -203,49 +199,34 @@ private:
   // non-manifold face. The boundary faces' edges must each be used an even number of times
   // for the boundary to be a closed surface.
   void check_faces() {
-    std::vector<FaceRecord> faces;
-    faces.reserve(4 * nt_);
-    for (std::size_t t = 0; t < nt_; ++t) {
-      poll(t);
-      if (!well_formed_[t]) continue;
-      for (const auto& fv : kTetFace) {
-        Index a = m_.tet_node(t, fv[0]), b = m_.tet_node(t, fv[1]), c = m_.tet_node(t, fv[2]);
-        if (a > b) std::swap(a, b);
-        if (b > c) std::swap(b, c);
-        if (a > b) std::swap(a, b);
-        faces.push_back(FaceRecord{a, b, c, Index(t)});
-      }
-    }
-    std::sort(faces.begin(), faces.end(), [](const FaceRecord& x, const FaceRecord& y) {
-      if (x.a != y.a) return x.a < y.a;
-      if (x.b != y.b) return x.b < y.b;
-      if (x.c != y.c) return x.c < y.c;
-      return x.t < y.t;
-    });
-
+    // the file skips faces naming nodes that are not there; well_formed_ leaves out the rest
+    // of what check_tets reported
+    const tet::FaceFile file = tet::file_faces(
+        nn_, nt_, 1,
+        [&](std::size_t t, std::array<Index, 4>& v) {
+          poll(t);
+          if (!well_formed_[t]) return false;
+          for (int k = 0; k < 4; ++k) v[static_cast<std::size_t>(k)] = m_.tet_node(t, k);
+          return true;
+        },
+        [] {});
     std::vector<std::uint64_t> boundary_edges;
-    for (std::size_t i = 0; i < faces.size();) {
-      std::size_t j = i + 1;
-      while (j < faces.size() && faces[j].a == faces[i].a && faces[j].b == faces[i].b && faces[j].c == faces[i].c)
-        ++j;
-      const FaceRecord& f = faces[i];
+    tet::for_each_face(file, 0, file.nodes(), [&](Index a, const tet::FiledFace* i, const tet::FiledFace* j) {
       if (j - i == 1) {
-        boundary_edges.push_back(edge_key(f.a, f.b));
-        boundary_edges.push_back(edge_key(f.b, f.c));
-        boundary_edges.push_back(edge_key(f.a, f.c));
+        boundary_edges.push_back(edge_key(a, i->b));
+        boundary_edges.push_back(edge_key(i->b, i->c));
+        boundary_edges.push_back(edge_key(a, i->c));
       } else if (j - i > 2) {
         std::vector<std::int64_t> ids;
         std::string names;
-        for (std::size_t k = i; k < j; ++k) ids.push_back(m_.tet_id(faces[k].t));
+        for (const tet::FiledFace* k = i; k != j; ++k) ids.push_back(m_.tet_id(static_cast<std::size_t>(k->tf / 4)));
         std::sort(ids.begin(), ids.end());
         for (auto id : ids) names += " " + num(id);
         add(ViolationKind::NonManifoldFace, ids,
-            "face of nodes " + num(m_.node_id(f.a)) + " " + num(m_.node_id(f.b)) + " " + num(m_.node_id(f.c)) +
+            "face of nodes " + num(m_.node_id(a)) + " " + num(m_.node_id(i->b)) + " " + num(m_.node_id(i->c)) +
                 " is shared by " + num(std::int64_t(j - i)) + " tetrahedra:" + names);
       }
-      i = j;
-    }
-    faces = std::vector<FaceRecord>();
+    });
 
     std::sort(boundary_edges.begin(), boundary_edges.end());
     for (std::size_t i = 0; i < boundary_edges.size();) {
