@@ -103,10 +103,7 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
   }
 
   // 2. Bandwidth test (7.3.3): no other node inside the projected loop between P_l and P_u.
-  double len_sum = 0;
-  std::size_t len_n = 0;
-  for (const auto& [key, uses] : edges) len_sum += (m.nodes[key_lo(key)] - m.nodes[key_hi(key)]).norm(), ++len_n;
-  const double psi = opt.band_rel * len_sum / std::max<std::size_t>(len_n, 1);
+  const double psi = opt.band_rel * snap.edge_length_sum / static_cast<double>(std::max<std::size_t>(edges.size(), 1));
   std::unordered_set<Index> on_loop, joined;
   double dmin = 1e300, dmax = -1e300;
   for (const auto& w : walked)
@@ -114,9 +111,20 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
       on_loop.insert(v);
       dmin = std::min(dmin, dist(v)), dmax = std::max(dmax, dist(v));
     }
-  for (const auto& [key, uses] : edges) {
-    if (on_loop.count(key_lo(key))) joined.insert(key_hi(key));
-    if (on_loop.count(key_hi(key))) joined.insert(key_lo(key));
+  if (!snap.edge_start.empty()) {  // the loop's nodes' neighbours, from the edges at each node
+    for (const Index v : on_loop) {
+      if (v < 0 || static_cast<std::size_t>(v) >= snap.slot.size() || snap.slot[v] < 0) continue;
+      const int k = snap.slot[v];
+      for (int i = snap.edge_start[k]; i < snap.edge_start[k + 1]; ++i) {
+        const std::uint64_t key = snap.edge_keys[snap.edge_at[i]];
+        joined.insert(key_lo(key) == v ? key_hi(key) : key_lo(key));
+      }
+    }
+  } else {
+    for (const auto& [key, uses] : edges) {
+      if (on_loop.count(key_lo(key))) joined.insert(key_hi(key));
+      if (on_loop.count(key_hi(key))) joined.insert(key_lo(key));
+    }
   }
   for (const auto& me : mid_edge) joined.insert(me[0]), joined.insert(me[1]);
   const PlaneFrame& fr = sec.frame();
@@ -126,8 +134,8 @@ CutOutcome edge_following_cut(PolyhedralModel& m, Index r, const CutPlane& pl, I
     for (Index v : w) proj.back().push_back(fr.to2d(pos(v)));
   }
   for (const auto& [v, I] : S.info) {
+    if (I.d < dmin - psi || I.d > dmax + psi) continue;  // first: most nodes are far from the band
     if (on_loop.count(v) || joined.count(v)) continue;
-    if (I.d < dmin - psi || I.d > dmax + psi) continue;
     if (point_in_loops(fr.to2d(m.nodes[v]), proj)) return reject("bandwidth");
   }
 

@@ -76,8 +76,12 @@ CutOutcome cut_region(PolyhedralModel& m, Index r, const CutPlane& pl, Index ea,
       if (q.x() > lo.x() - margin && q.x() < hi.x() + margin && q.y() > lo.y() - margin && q.y() < hi.y() + margin)
         return reject("near_vertex");
     }
-    for (const auto& [v, I] : info) {  // a vertex in the polygon's interior: the cut would touch it
-      if (I.side != 0) continue;
+    // a vertex in the polygon's interior: the cut would touch it (the nodes on the plane, then
+    // any entry made after their sides were set, whose side is 0 untouched)
+    std::vector<int> on = S.on_plane;
+    for (int k = S.measured; k < info.size(); ++k) on.push_back(k);
+    for (const int k : on) {
+      const Index v = info.node(k);
       const int pv = sec.vertex_point(v);
       if (pv < static_cast<int>(point_used.size()) && point_used[pv]) continue;
       if (point_in_loops(sec.frame().to2d(m.nodes[v]), pl2)) return reject("touches_vertex");

@@ -87,9 +87,37 @@ RegionSnapshot region_snapshot(const PolyhedralModel& m, Index r) {
   }
   s.face_start.push_back(0);
   for (Index f : s.faces) {
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (const auto& loop : m.faces[f].loops)
-      for (Index v : loop) s.face_entry.push_back(s.slot[v]);
+      for (Index v : loop) {
+        s.face_entry.push_back(s.slot[v]);
+        lo = lo.cwiseMin(m.nodes[v]), hi = hi.cwiseMax(m.nodes[v]);
+      }
     s.face_start.push_back(static_cast<int>(s.face_entry.size()));
+    const Vec3 c = 0.5 * (lo + hi);
+    double radius = 0;
+    for (const auto& loop : m.faces[f].loops)
+      for (Index v : loop) radius = std::max(radius, (m.nodes[v] - c).norm());
+    s.face_centre.push_back(c);
+    s.face_radius.push_back(radius);
+  }
+  s.edge_keys.reserve(s.edges.size());
+  std::vector<int> count(s.nodes.size() + 1, 0);
+  bool every_node = true;
+  for (const auto& kv : s.edges) {
+    const Index a = key_lo(kv.first), b = key_hi(kv.first);
+    s.edge_keys.push_back(kv.first);
+    s.edge_length_sum += (m.nodes[a] - m.nodes[b]).norm();
+    const bool known = static_cast<std::size_t>(b) < s.slot.size() && a >= 0 && s.slot[a] >= 0 && s.slot[b] >= 0;
+    every_node = every_node && known;
+    if (known) ++count[s.slot[a] + 1], ++count[s.slot[b] + 1];
+  }
+  if (every_node) {
+    for (std::size_t k = 1; k < count.size(); ++k) count[k] += count[k - 1];
+    s.edge_start = count;
+    s.edge_at.resize(static_cast<std::size_t>(count.back()));
+    for (std::size_t e = 0; e < s.edge_keys.size(); ++e)
+      for (const Index v : {key_lo(s.edge_keys[e]), key_hi(s.edge_keys[e])}) s.edge_at[count[s.slot[v]]++] = static_cast<int>(e);
   }
   return s;
 }
@@ -137,12 +165,18 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
   // 1. Nodes: distance, side, shortest incident edge (the snapshot's, else measured here); nodes
   // too near the plane.
   if (!snap) shortest_edges(m, F, info);
+  int entry = 0;
   for (auto& [v, I] : info) {
     I.d = pl.n.dot(m.nodes[v]) - pl.c;
     I.side = std::abs(I.d) <= tol_on ? 0 : (I.d > 0 ? 1 : -1);
     if (I.side != 0 && std::abs(I.d) < opt.near_vertex_rel * I.min_len) near.push_back(v);
+    if (I.side == 0) res.on_plane.push_back(entry);
+    ++entry;
   }
+  res.measured = entry;
   if (whole_plane && !near.empty()) return fail("near_vertex");
+  // a face whose sphere the plane misses by more than this has every node strictly on one side
+  const double sphere_margin = tol_on + 1e-9 * m.size, n_norm = pl.n.norm();
 
   // 2. Chords: where the plane crosses a face, the inside intervals of the face's line.
   for (std::size_t fi = 0; fi < F.size(); ++fi) {
@@ -150,6 +184,7 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
     const ModelFace& face = m.faces[f];
     bool pos = false, neg = false;
     if (snap) {
+      if (std::abs(pl.n.dot(snap->face_centre[fi]) - pl.c) > snap->face_radius[fi] * n_norm + sphere_margin) continue;
       for (int k = snap->face_start[fi]; k < snap->face_start[fi + 1]; ++k) {
         const int side = info.entry(snap->face_entry[k]).side;
         pos |= side > 0, neg |= side < 0;
@@ -207,12 +242,11 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
   RegionEdges own_edges;
   if (!snap) own_edges = region_edges(m, r);
   const RegionEdges& edges = snap ? snap->edges : own_edges;
-  for (const auto& [key, uses] : edges) {
+  const auto along_edge = [&](std::uint64_t key, const std::vector<FaceUse>& uses) {
     const Index a = key_lo(key), b = key_hi(key);
-    if (info[a].side != 0 || info[b].side != 0) continue;
     const EdgeFrame ef(m.nodes[a], m.nodes[b]);
     const Vec3 t = pl.n.cross(ef.d);
-    if (t.norm() < 0.5) continue;  // numerically the edge is not in the plane
+    if (t.norm() < 0.5) return;  // numerically the edge is not in the plane
     const std::vector<Wedge> wedges = interior_wedges(m, r, a, b, uses);
     int interior = 0;
     std::vector<std::pair<Vec3, const char*>> dirs;
@@ -234,6 +268,28 @@ SectionResult build_section(const PolyhedralModel& m, Index r, const CutPlane& p
       const bool forward = pl.n.cross(m.nodes[b] - m.nodes[a]).dot(u) > 0;
       const int pa = sec.vertex_point(a), pb = sec.vertex_point(b);
       sec.pieces.push_back({forward ? pa : pb, forward ? pb : pa, -1, interior == 2 ? "edge_inside_cut" : flaw});
+    }
+  };
+  if (snap && !snap->edge_start.empty()) {
+    // the edges with both nodes on the plane, from the nodes there, in the table's order
+    std::vector<int> in_plane;
+    for (const int k : res.on_plane) {
+      if (static_cast<std::size_t>(k) + 1 >= snap->edge_start.size()) continue;  // not a node of the region
+      const Index v = info.node(k);
+      for (int i = snap->edge_start[k]; i < snap->edge_start[k + 1]; ++i) {
+        const std::uint64_t key = snap->edge_keys[snap->edge_at[i]];
+        if (key_lo(key) == v && info[key_hi(key)].side == 0) in_plane.push_back(snap->edge_at[i]);
+      }
+    }
+    std::sort(in_plane.begin(), in_plane.end());
+    for (const int e : in_plane) {
+      const std::uint64_t key = snap->edge_keys[e];
+      along_edge(key, edges.at(key));
+    }
+  } else {
+    for (const auto& [key, uses] : edges) {
+      if (info[key_lo(key)].side != 0 || info[key_hi(key)].side != 0) continue;
+      along_edge(key, uses);
     }
   }
   if (sec.pieces.empty()) return fail("not_interior");

@@ -72,12 +72,26 @@ class Section {
 // faces, its nodes in the order those faces first use them with their shortest edges, and each
 // face's nodes as indices into that list. corpus/Zylkopf.brep's decomposition built 29,252
 // sections, and measuring every node's shortest edge again for each was half their time.
+//
+// Every plane used to walk the whole edge table (a hash map: a cache miss an edge) for the few
+// edges lying in the plane, and every face's nodes for the few faces it crosses: a third and a
+// quarter of the sections' time on corpus/wrenchnut.brep's finest proxy. The edges at each node
+// and a sphere round each face let a section look only where the plane is, in the same order.
 struct RegionSnapshot {
   RegionEdges edges;
   std::vector<Index> faces;                        // m.live_faces(r)
   std::vector<int> slot;                           // per model node: its entry below, -1 when not the region's
   std::vector<std::pair<Index, NodeInfo>> nodes;   // min_len set
   std::vector<int> face_start, face_entry;         // faces[i]'s nodes: face_entry[face_start[i] .. face_start[i + 1])
+  // the edges' keys in `edges`' own order, and per node entry the edges at it, as indices into
+  // edge_keys: edge_at[edge_start[k] .. edge_start[k + 1]) (each edge under both its nodes);
+  // empty when an edge's node has no entry (then the sections walk `edges` as before)
+  std::vector<std::uint64_t> edge_keys;
+  std::vector<int> edge_start, edge_at;
+  double edge_length_sum = 0;                      // over edge_keys, in their order
+  // per face: a centre and a radius holding its nodes (a plane farther away does not cross it)
+  std::vector<Vec3> face_centre;
+  std::vector<double> face_radius;
 };
 RegionSnapshot region_snapshot(const PolyhedralModel& m, Index r);
 
@@ -105,10 +119,12 @@ class NodeTable {
     return entries_[s].second;
   }
   const NodeInfo& entry(int k) const { return entries_[k].second; }
+  Index node(int k) const { return entries_[k].first; }
   auto begin() { return entries_.begin(); }
   auto end() { return entries_.end(); }
   auto begin() const { return entries_.begin(); }
   auto end() const { return entries_.end(); }
+  int size() const { return static_cast<int>(entries_.size()); }
 
  private:
   const std::vector<int>* shared_ = nullptr;
@@ -121,6 +137,8 @@ struct SectionResult {
   const char* reject = nullptr;       // why no section could be built
   NodeTable info;
   std::vector<Index> near;            // nodes off the plane but too near it
+  std::vector<int> on_plane;          // the entries of info on the plane, in info's order
+  int measured = 0;                   // info's entries when their sides were set (later ones: on_plane too)
   Section sec;
   std::vector<std::vector<int>> loops;   // piece ids
   std::vector<std::vector<Vec2>> loop2d;

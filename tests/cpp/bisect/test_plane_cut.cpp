@@ -2,6 +2,7 @@
 // contour splitting) one at a time, and the reasons they reject a plane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -94,6 +95,27 @@ TEST(PlaneCut, ASectionFromTheRegionsSnapshotIsTheSectionWorkedOutAlone) {
     const PolyhedralModel m = model(text);
     const RegionSnapshot snap = region_snapshot(m, 0);
     EXPECT_EQ(snap.faces, m.live_faces(0));
+    // the edges at each node: every edge of the table under both its nodes, and nothing else
+    ASSERT_EQ(snap.edge_keys.size(), snap.edges.size());
+    ASSERT_EQ(snap.edge_start.size(), snap.nodes.size() + 1);
+    EXPECT_EQ(snap.edge_at.size(), 2 * snap.edge_keys.size());
+    double length = 0;
+    for (std::size_t e = 0; e < snap.edge_keys.size(); ++e) {
+      const std::uint64_t key = snap.edge_keys[e];
+      EXPECT_EQ(snap.edges.count(key), 1u);
+      length += (m.nodes[key_lo(key)] - m.nodes[key_hi(key)]).norm();
+      for (const Index v : {key_lo(key), key_hi(key)}) {
+        const int k = snap.slot[v];
+        ASSERT_GE(k, 0);
+        EXPECT_EQ(std::count(snap.edge_at.begin() + snap.edge_start[k], snap.edge_at.begin() + snap.edge_start[k + 1],
+                             static_cast<int>(e)), 1);
+      }
+    }
+    EXPECT_NEAR(snap.edge_length_sum, length, 1e-12 * length);
+    // every face's nodes lie within its sphere
+    for (std::size_t i = 0; i < snap.faces.size(); ++i)
+      for (const auto& loop : m.faces[snap.faces[i]].loops)
+        for (const Index v : loop) EXPECT_LE((m.nodes[v] - snap.face_centre[i]).norm(), snap.face_radius[i] * (1 + 1e-12));
     for (const Vec3& dir : {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(1, 1, 0), Vec3(1, 2, 0.5)})
       for (const double at : {0.25, 0.5, 1.0, 1.01, 1.5, 2.0})
         for (const bool whole : {false, true}) {
@@ -116,6 +138,11 @@ TEST(PlaneCut, ASectionFromTheRegionsSnapshotIsTheSectionWorkedOutAlone) {
             EXPECT_EQ(a[k].second.min_len, b[k].second.min_len);
           }
           EXPECT_EQ(alone.near, kept.near);
+          std::vector<int> on_plane;  // the entries on the plane, in the table's order
+          for (std::size_t k = 0; k < b.size(); ++k)
+            if (b[k].second.side == 0 && static_cast<int>(k) < kept.measured) on_plane.push_back(static_cast<int>(k));
+          EXPECT_EQ(kept.on_plane, on_plane);
+          EXPECT_EQ(alone.on_plane, kept.on_plane);
           ASSERT_EQ(alone.sec.pieces.size(), kept.sec.pieces.size());
           for (std::size_t k = 0; k < alone.sec.pieces.size(); ++k) {
             EXPECT_EQ(alone.sec.pieces[k].from, kept.sec.pieces[k].from);
