@@ -2,8 +2,12 @@
 //
 // Writer: *NODE (NSET=Nall), one *ELEMENT block per region with ELSET=Region<k> (k = region+1),
 // an *ELSET Eall of every tetrahedron, and per boundary-triangle tag t an *NSET Face<t+1> with
-// the nodes of its triangles (what a solver needs to apply loads and supports). Triangles are
-// not written as elements: a CalculiX deck with 2D elements beside the solid would mesh them.
+// the nodes of its triangles (supports, nodal loads), an *ELSET Face<t+1>_Elements of the
+// tetrahedra with a face on them, and a *SURFACE Face<t+1>_Surface (TYPE=ELEMENT) of those
+// tetrahedra's faces as "element, S<i>" (pressure by *DSLOAD, *TIE, *CONTACT PAIR, *FILM). An
+// interface triangle is a face of a tetrahedron on each side: its surface holds both, in element
+// order (a tie takes one side: the lines of one region's elements). Triangles are not written as
+// elements: a CalculiX deck with 2D elements beside the solid would mesh them.
 // C3D10 orders its mid-edge nodes 01 12 02 03 13 23 like tet_mesh.hpp, and C3D4/C3D10 are
 // positively oriented like ours (checked on gmsh's .inp output), so no reordering is needed.
 //
@@ -14,6 +18,8 @@
 // own. Node and element numbers go to node_ids / tet_ids; elements come back sorted by number.
 // Triangles are not read (the .inp we write has none; boundary node sets are not triangles).
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cctype>
 #include <map>
 #include <ostream>
@@ -71,11 +77,57 @@ void write_inp(const TetMesh& mesh, std::ostream& out) {
   std::map<Index, std::set<std::int64_t>> face_nodes;
   for (std::size_t f = 0; f < nf; ++f)
     for (int i = 0; i < npf; ++i) face_nodes[mesh.tri_tag[f]].insert(mesh.node_id(mesh.tris[f * npf + i]));
+  const std::map<Index, std::vector<ElementFace>> on_face = element_faces(mesh);
   for (auto& [g, nodes] : face_nodes) {
-    s += "*NSET, NSET=Face" + std::to_string(g + 1) + "\n";
+    const std::string name = "Face" + std::to_string(g + 1);
+    s += "*NSET, NSET=" + name + "\n";
     put_list(std::vector<std::int64_t>(nodes.begin(), nodes.end()));
+    const auto it = on_face.find(g);
+    if (it == on_face.end()) continue;  // no tetrahedron has these triangles: the validator says so
+    std::set<std::int64_t> elements;
+    for (const ElementFace& e : it->second) elements.insert(mesh.tet_id(e.tet));
+    s += "*ELSET, ELSET=" + name + "_Elements\n";
+    put_list(std::vector<std::int64_t>(elements.begin(), elements.end()));
+    s += "*SURFACE, NAME=" + name + "_Surface, TYPE=ELEMENT\n";
+    for (const ElementFace& e : it->second) {
+      put_int(s, mesh.tet_id(e.tet));
+      s += ", S";
+      s += char('0' + kAbaqusTetFace[static_cast<std::size_t>(e.face)]);
+      s += '\n';
+      spill(s, out);
+    }
   }
   spill(s, out, true);
+}
+
+std::map<Index, std::vector<ElementFace>> element_faces(const TetMesh& mesh) {
+  const int npf = mesh.nodes_per_tri();
+  const std::size_t nt = mesh.num_tets(), nf = mesh.num_tris(), nn = mesh.nodes.size();
+  // the triangles filed under their smallest corner (a counting sort: boundary nodes only hold any)
+  std::vector<std::uint32_t> first(nn + 1, 0);
+  std::vector<std::array<Index, 3>> sorted(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    std::array<Index, 3> k{mesh.tris[f * npf], mesh.tris[f * npf + 1], mesh.tris[f * npf + 2]};
+    std::sort(k.begin(), k.end());
+    sorted[f] = k;
+    if (k[0] >= 0 && static_cast<std::size_t>(k[2]) < nn) ++first[static_cast<std::size_t>(k[0]) + 1];
+  }
+  for (std::size_t v = 0; v < nn; ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> at(first.begin(), first.end() - 1), filed(first[nn]);
+  for (std::size_t f = 0; f < nf; ++f)
+    if (sorted[f][0] >= 0 && static_cast<std::size_t>(sorted[f][2]) < nn) filed[at[static_cast<std::size_t>(sorted[f][0])]++] = static_cast<std::uint32_t>(f);
+  std::map<Index, std::vector<ElementFace>> r;
+  for (std::size_t t = 0; t < nt; ++t)
+    for (int face = 0; face < 4; ++face) {
+      const auto& c = kTetFace[static_cast<std::size_t>(face)];
+      std::array<Index, 3> k{mesh.tet_node(t, c[0]), mesh.tet_node(t, c[1]), mesh.tet_node(t, c[2])};
+      std::sort(k.begin(), k.end());
+      if (k[0] < 0 || static_cast<std::size_t>(k[2]) >= nn) continue;
+      const std::size_t v = static_cast<std::size_t>(k[0]);
+      for (std::uint32_t i = first[v]; i < first[v + 1]; ++i)
+        if (sorted[filed[i]] == k) r[mesh.tri_tag[filed[i]]].push_back({t, face});
+    }
+  return r;
 }
 
 namespace {

@@ -2,7 +2,9 @@
 // io.hpp dispatch to these). Stream overloads take the name used in error messages, so that the
 // tests can read and write in memory and every message still says `NAME:LINE: what`.
 #pragma once
+#include <array>
 #include <charconv>
+#include <cstddef>
 #include <cstdint>
 #include <iosfwd>
 #include <map>
@@ -22,6 +24,18 @@ void write_vtu(const TetMesh& mesh, std::ostream& out);
 void write_msh(const TetMesh& mesh, std::ostream& out);
 void write_inp(const TetMesh& mesh, std::ostream& out);
 void write_unv(const TetMesh& mesh, std::ostream& out);
+
+// A face of a tetrahedron: `face` is opposite corner `face` (kTetFace's numbering).
+struct ElementFace {
+  std::size_t tet;
+  int face;
+};
+// Abaqus / CalculiX face label S<k> of our face f: S1 = corners 1-2-3, S2 = 1-4-2, S3 = 2-4-3,
+// S4 = 3-4-1 in the element's 1-based numbering, i.e. opposite our corners 3, 2, 0 and 1.
+constexpr std::array<int, 4> kAbaqusTetFace{3, 4, 2, 1};
+// Per triangle tag, the tetrahedron faces that are its triangles (corners matched, any order),
+// in tetrahedron order then face order: one per boundary triangle, two per interface triangle.
+std::map<Index, std::vector<ElementFace>> element_faces(const TetMesh& mesh);
 
 // Readers. `name` only labels error messages.
 TetMesh read_vtu(std::istream& in, const std::string& name);

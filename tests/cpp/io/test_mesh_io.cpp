@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "bisect/errors.hpp"
@@ -110,6 +111,80 @@ TEST(MeshIoRoundTrip, InpWritesSetsNotTriangles) {
   EXPECT_NE(t.find("*ELSET, ELSET=Eall\n1, 2, 3, 4, 5, 6,\n"), std::string::npos);
   EXPECT_NE(t.find("*NSET, NSET=Face1\n"), std::string::npos);
   EXPECT_EQ(t.find("CPS3"), std::string::npos);
+}
+
+TEST(MeshIoRoundTrip, InpHasASurfaceAndAnElementSetPerFace) {
+  // Read with the Abaqus manual's own face table (S1 = nodes 1-2-3, S2 = 1-4-2, S3 = 2-4-3,
+  // S4 = 3-4-1), not the writer's: every "element, S<k>" line of Face<t+1>_Surface is a triangle
+  // of tag t, every triangle is there (an interface's from both sides), and Face<t+1>_Elements
+  // lists the surface's elements. The grid's numbers are not the indices, so a writer that
+  // printed indices would fail too.
+  const std::array<std::array<int, 3>, 4> abaqus{{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}}};
+  for (int order : {1, 2}) {
+    TetMesh m = grid_mesh(2, order);
+    for (std::size_t t = 0; t < m.num_tets(); ++t) m.tet_ids.push_back(100 + 2 * std::int64_t(t));
+    std::stringstream out;
+    meshio::write_inp(m, out);
+    std::map<std::string, std::vector<std::pair<std::int64_t, int>>> surfaces;
+    std::map<std::string, std::vector<std::int64_t>> elsets;
+    std::string line, surface, elset;
+    while (std::getline(out, line)) {
+      if (line[0] == '*') {
+        surface = elset = "";
+        if (line.rfind("*SURFACE, NAME=", 0) == 0) {
+          EXPECT_NE(line.find(", TYPE=ELEMENT"), std::string::npos) << line;
+          surface = line.substr(15, line.find(',', 15) - 15);
+          surfaces[surface];
+        } else if (line.rfind("*ELSET, ELSET=Face", 0) == 0) {
+          elset = line.substr(14);
+          elsets[elset];
+        }
+        continue;
+      }
+      if (!surface.empty()) {
+        const std::size_t comma = line.find(", S");
+        ASSERT_NE(comma, std::string::npos) << line;
+        surfaces[surface].emplace_back(std::stoll(line.substr(0, comma)), std::stoi(line.substr(comma + 3)));
+      } else if (!elset.empty()) {
+        std::stringstream ids(line);
+        for (std::string id; std::getline(ids, id, ',');)
+          if (id.find_first_not_of(' ') != std::string::npos) elsets[elset].push_back(std::stoll(id));
+      }
+    }
+    ASSERT_EQ(surfaces.size(), 7u);  // six sides and the interface
+    ASSERT_EQ(elsets.size(), 7u);
+    for (Index tag = 0; tag < 7; ++tag) {
+      const std::string name = "Face" + std::to_string(tag + 1);
+      std::multiset<std::array<Index, 3>> want, got;
+      for (std::size_t f = 0; f < m.num_tris(); ++f)
+        if (m.tri_tag[f] == tag) {
+          const Index* v = &m.tris[f * m.nodes_per_tri()];
+          std::array<Index, 3> k{v[0], v[1], v[2]};
+          std::sort(k.begin(), k.end());
+          want.insert(k);
+          if (tag == 6) want.insert(k);  // an interface: a face of a tetrahedron on each side
+        }
+      std::set<std::int64_t> elements;
+      for (const auto& [id, label] : surfaces[name + "_Surface"]) {
+        ASSERT_GE(label, 1);
+        ASSERT_LE(label, 4);
+        ASSERT_EQ((id - 100) % 2, 0);
+        const std::size_t t = static_cast<std::size_t>((id - 100) / 2);
+        ASSERT_LT(t, m.num_tets());
+        std::array<Index, 3> k;
+        for (int i = 0; i < 3; ++i) k[i] = m.tet_node(t, abaqus[label - 1][i]);
+        std::sort(k.begin(), k.end());
+        got.insert(k);
+        elements.insert(id);
+      }
+      EXPECT_FALSE(want.empty()) << name;
+      EXPECT_EQ(got, want) << name << ", order " << order;
+      EXPECT_EQ(std::vector<std::int64_t>(elements.begin(), elements.end()), elsets[name + "_Elements"]) << name;
+    }
+    // the reader still takes the file, sets and surfaces skipped
+    std::stringstream in(out.str());
+    expect_same(m, meshio::read_inp(in, "surfaces.inp"), false);
+  }
 }
 
 // ---- files written by gmsh ----
