@@ -69,12 +69,37 @@ double deviation(const ParametricSurface& s, const std::vector<Vec3>& X, const s
   return (s.point(s.closest_point(c, (uv[0] + uv[1] + uv[2]) / 3)) - c).norm();
 }
 
+// A triangle whose corners lie on one line (to round-off): no area, no normal.
+bool flat_in_space(const std::vector<Vec3>& X, const std::array<Index, 3>& t) {
+  const Vec3 e1 = X[t[1]] - X[t[0]], e2 = X[t[2]] - X[t[0]], e3 = X[t[2]] - X[t[1]];
+  const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
+  return e1.cross(e2).norm() <= 1e-9 * longest;
+}
+// ... with three nodes (a pole's triangle, two corners one node, is left to the proxy's own rule)
+bool mendable(const std::vector<Vec3>& X, const std::array<Index, 3>& t) {
+  return t[0] != t[1] && t[1] != t[2] && t[2] != t[0] && flat_in_space(X, t);
+}
+
 // Lawson flips within one curved face: two triangles sharing an edge take the other diagonal
 // when their centroids then lie nearer the surface. A tessellation made in (u, v) does not bend
 // the way the surface does everywhere (round a sphere's pole it has edges that turn in, where the
 // sphere turns out): the decomposition would cut at each, into slivers.
-void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, BrepTessellation::Face& f) {
-  for (int pass = 0; pass < 8; ++pass) {
+//
+// These flips may make triangles flat in space (three corners on one line): on a cone they lie
+// on the surface, so their deviation is nil. Round a half cone's apex (a degenerate edge, one
+// point in space at every u) they made a fan from the apex to the nodes of one generatrix, whose
+// triangles are segments of that line lying over each other, which the proxy's check reads as
+// facets that cross (corpus/Block.brep's Face478, a countersink's tip: 48 pairs at every
+// deflection, so Block was refused). With `mend`, no flip makes a flat triangle and a flat one
+// is flipped with its neighbour whatever the deviation (two with area and one flat triangle
+// fewer each time), the passes going on while any is left. Without, the flips are as they were:
+// the shapes whose proxies mesh with flat facets (corpus/Kurbelwelle.brep's cones) keep their
+// meshes, mended ones being no better there (45,032 tetrahedra and 3.1 degrees at 2*10^4 became
+// 64,878 and 2.0). `flat` counts what is left flat.
+void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, BrepTessellation::Face& f, bool mend, std::size_t& flat) {
+  flat = 0;
+  for (const auto& t : f.tris) flat += mendable(X, t);
+  for (std::size_t pass = 0; pass < 8 || (mend && flat > 0 && pass < 8 + f.tris.size()); ++pass) {
     std::map<std::pair<Index, Index>, std::pair<std::size_t, int>> edge;  // (a, b) directed -> (tri, corner opposite)
     for (std::size_t t = 0; t < f.tris.size(); ++t)
       for (int k = 0; k < 3; ++k) edge[{f.tris[t][(k + 1) % 3], f.tris[t][(k + 2) % 3]}] = {t, k};
@@ -96,7 +121,9 @@ void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, Brep
       if (!ccw(uc, ua, ud) || !ccw(ud, ub, uc)) continue;
       const std::array<Index, 3> A{c, a, d}, B{d, b, c};
       const std::array<Vec2, 3> uA{uc, ua, ud}, uB{ud, ub, uc};
-      if ((X[d] - X[c]).cross(X[a] - X[c]).norm() <= 0 || (X[b] - X[d]).cross(X[c] - X[d]).norm() <= 0) continue;
+      if (mend ? flat_in_space(X, A) || flat_in_space(X, B)
+               : (X[d] - X[c]).cross(X[a] - X[c]).norm() <= 0 || (X[b] - X[d]).cross(X[c] - X[d]).norm() <= 0)
+        continue;
       // the new triangles face the way the surface does (within 60 degrees), so a flip never
       // folds the facets over each other
       auto faces_up = [&](const std::array<Index, 3>& tri, const std::array<Vec2, 3>& uv) {
@@ -107,12 +134,14 @@ void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, Brep
         return m.dot(sn) > 0.5 * m.norm() * sn.norm();
       };
       if (!faces_up(A, uA) || !faces_up(B, uB)) continue;
+      const int was_flat = mendable(X, f.tris[t]) + mendable(X, f.tris[n]);
       const double now = std::max(deviation(s, X, f.tris[t], f.uv[t]), deviation(s, X, f.tris[n], f.uv[n]));
       const double then = std::max(deviation(s, X, A, uA), deviation(s, X, B, uB));
-      if (then < now * (1 - 1e-6)) {
+      if ((mend && was_flat > 0) || then < now * (1 - 1e-6)) {
         f.tris[t] = A, f.uv[t] = uA, f.tris[n] = B, f.uv[n] = uB;
         touched[t] = touched[n] = 1;
         ++flips;
+        flat = flat + static_cast<std::size_t>(mendable(X, A) + mendable(X, B)) - static_cast<std::size_t>(was_flat);
       }
     }
     if (flips == 0) break;
@@ -121,12 +150,16 @@ void follow_surface(const ParametricSurface& s, const std::vector<Vec3>& X, Brep
 
 }  // namespace
 
-BrepProxy make_proxy(const BrepInput& in, double linear, double angular) {
+BrepProxy make_proxy(const BrepInput& in, double linear, double angular, bool mend_flat) {
   BrepProxy px;
   px.linear = linear, px.angular = angular;
   px.tess = in.tessellate(linear, angular);
   for (std::size_t f = 0; f < in.faces.size() && f < px.tess.faces.size(); ++f)
-    if (!in.faces[f].planar) follow_surface(*in.faces[f].surface, px.tess.nodes, px.tess.faces[f]);
+    if (!in.faces[f].planar) {
+      std::size_t flat = 0;
+      follow_surface(*in.faces[f].surface, px.tess.nodes, px.tess.faces[f], mend_flat, flat);
+      px.flat_facets += flat;
+    }
   const BrepTessellation& t = px.tess;
   if (t.faces.size() != in.faces.size() || t.edges.size() != in.edges.size())
     throw MeshingError(in.source + ": the tessellation does not match the shape's faces and edges");

@@ -24,11 +24,14 @@ struct BrepProxy {
   // Per node: the chords it ends, as (B-rep edge, segment i from tess.edges[e].nodes[i] to [i+1]).
   std::vector<std::vector<std::array<Index, 2>>> node_chords;
   double linear = 0, angular = 0;  // the deflections used
+  std::size_t flat_facets = 0;     // curved faces' triangles with three nodes on one line
 };
 
 // Tessellates `in` at the given deflections and builds the proxy. Throws InputError naming the
-// B-rep face when a face has no triangles.
-BrepProxy make_proxy(const BrepInput& in, double linear, double angular);
+// B-rep face when a face has no triangles. mend_flat: no triangle of a curved face is left flat
+// in space where a flip of it takes it away (flat_facets counts any left), else the flips
+// towards the surface may make them (see follow_surface in brep_proxy.cpp).
+BrepProxy make_proxy(const BrepInput& in, double linear, double angular, bool mend_flat = false);
 
 // The linear deflection at which px's curved faces would keep to its angular deflection: BRepMesh
 // keeps to the angle on elementary surfaces, but on a B-spline face the linear deflection can

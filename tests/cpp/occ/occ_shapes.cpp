@@ -2,6 +2,7 @@
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_GTransform.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -15,6 +16,8 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
+#include <ShapeUpgrade_ShapeDivideClosed.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
@@ -25,6 +28,7 @@
 #include <gp_Ax2.hxx>
 #include <gp_GTrsf.hxx>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -64,6 +68,23 @@ TopoDS_Shape make_box_minus_cylinder() {
   BRepAlgoAPI_Cut cut(box, cyl);
   if (!cut.IsDone()) throw std::runtime_error("box minus cylinder failed");
   return cut.Shape();
+}
+
+TopoDS_Shape make_drilled_block() {
+  const double r = 1.5, point = r / std::tan(59 * M_PI / 180);  // a 118 degree point
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 6).Shape();
+  const TopoDS_Shape bore = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5, 5, 2), gp_Dir(0, 0, 1)), r, 5).Shape();
+  const TopoDS_Shape tip = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(5, 5, 2 - point), gp_Dir(0, 0, 1)), 0, r, point).Shape();
+  BRepAlgoAPI_Fuse drill(bore, tip);
+  if (!drill.IsDone()) throw std::runtime_error("the drill's fuse failed");
+  ShapeUpgrade_UnifySameDomain unify(drill.Shape());
+  unify.Build();
+  BRepAlgoAPI_Cut cut(box, unify.Shape());
+  if (!cut.IsDone()) throw std::runtime_error("the drilled block's cut failed");
+  ShapeUpgrade_ShapeDivideClosed halves(cut.Shape());
+  halves.SetNbSplitPoints(1);
+  if (!halves.Perform()) throw std::runtime_error("the drilled block's closed faces were not split");
+  return halves.Result();
 }
 
 namespace {

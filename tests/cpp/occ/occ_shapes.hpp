@@ -26,6 +26,11 @@ TopoDS_Shape make_sphere();
 TopoDS_Shape make_ellipsoid();
 // the box [0,4] x [0,4] x [0,2] minus a cylinder of radius 1 through it on (2, 2, z): volume 32 - 2 pi
 TopoDS_Shape make_box_minus_cylinder();
+// the box [0,10] x [0,10] x [0,6] with a blind hole drilled from its top on (5, 5, z): radius
+// 1.5 down to z = 2, then a 118 degree point to its apex at z = 2 - 1.5 / tan 59; its closed
+// faces split in halves (ShapeUpgrade_ShapeDivideClosed), as STEP files often have them, so the
+// point is two half cones meeting at a degenerate apex edge; volume 600 - pi 1.5^2 (4 + point / 3)
+TopoDS_Shape make_drilled_block();
 // the boxes [0,1]^3 and [1,2] x [0,1] x [0,1] as a CompSolid sharing the face x = 1 (general fuse)
 TopoDS_Shape make_two_box_compsolid();
 // the box [0,4]^3 with a spherical cavity of radius 1 at its centre: one solid, two shells;
