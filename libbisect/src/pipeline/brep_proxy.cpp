@@ -90,7 +90,7 @@ bool mendable(const std::vector<Vec3>& X, const std::array<Index, 3>& t) {
 // point in space at every u) they made a fan from the apex to the nodes of one generatrix, whose
 // triangles are segments of that line lying over each other, which the proxy's check reads as
 // facets that cross (corpus/Block.brep's Face478, a countersink's tip: 48 pairs at every
-// deflection, so Block was refused). With `mend`, no flip makes a flat triangle and a flat one
+// deflection, so Block is refused). With `mend`, no flip makes a flat triangle and a flat one
 // is flipped with its neighbour whatever the deviation (two with area and one flat triangle
 // fewer each time), the passes going on while any is left. Without, the flips are as they were:
 // the shapes whose proxies mesh with flat facets (corpus/Kurbelwelle.brep's cones) keep their

@@ -328,8 +328,9 @@ TEST(Cli, MeshesA2DInputIntoVtu) {
   EXPECT_NE(r.err.find("2D meshes are written as .vtu"), std::string::npos) << r.err;
 }
 
-// A B-rep file through the main job: meshed on its true surfaces, one NSET per B-rep face in the
-// .inp (FreeCAD's Face<k> numbering), and the help names the B-rep inputs.
+// A B-rep file through the main job: meshed on its true surfaces, per B-rep face in the .inp
+// (FreeCAD's Face<k> numbering) an NSET, an ELSET and a SURFACE, and the help names the B-rep
+// inputs.
 TEST(Cli, MeshesABrepFileWithItsFaceSets) {
   const fs::path lug = fs::path(BISECT_SHARED_DIR) / "models" / "lug.brep";
   if (!fs::exists(lug)) GTEST_SKIP() << lug << " is missing";
@@ -341,6 +342,12 @@ TEST(Cli, MeshesABrepFileWithItsFaceSets) {
   for (std::size_t at = inp.find("*NSET, NSET=Face"); at != std::string::npos; at = inp.find("*NSET, NSET=Face", at + 1)) ++sets;
   EXPECT_GE(sets, 6) << "one NSET per B-rep face";
   EXPECT_NE(inp.find("*NSET, NSET=Face1\n"), std::string::npos);
+  int elsets = 0, surfaces = 0;
+  for (std::size_t at = inp.find("*ELSET, ELSET=Face"); at != std::string::npos; at = inp.find("*ELSET, ELSET=Face", at + 1)) ++elsets;
+  for (std::size_t at = inp.find("*SURFACE, NAME=Face"); at != std::string::npos; at = inp.find("*SURFACE, NAME=Face", at + 1)) ++surfaces;
+  EXPECT_EQ(elsets, sets) << "one ELSET Face<k>_Elements per B-rep face";
+  EXPECT_EQ(surfaces, sets) << "one SURFACE Face<k>_Surface per B-rep face";
+  EXPECT_NE(inp.find("*SURFACE, NAME=Face1_Surface, TYPE=ELEMENT\n"), std::string::npos);
   EXPECT_NE(inp.find("C3D4"), std::string::npos);
   EXPECT_NE(run("--help").out.find(".step/.stp"), std::string::npos);
 }
