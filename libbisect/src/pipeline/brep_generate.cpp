@@ -198,22 +198,18 @@ Decomposed decompose_brep(const BrepInput& in, const GenerateOptions& opt, doubl
                           const std::function<bool(double)>& progress) {
   const double diag = (in.bbox_max - in.bbox_min).norm();
   double linear = 0.05 * diag;
-  const bool mend = mend_flat;  // the facets flat in space flipped away (pipeline::make_proxy's mend_flat)
-  bool angle_kept = true, first = true;
   for (int attempt = 0;; ++attempt) {
     Decomposed out;
-    out.proxy = pipeline::make_proxy(in, linear, angle, mend);
-    if (first) {
-      first = false;
+    out.proxy = pipeline::make_proxy(in, linear, angle, mend_flat);
+    if (attempt == 0) {
       // no finer than a thousandth of the diagonal
       const double keeping = std::max(pipeline::angle_keeping_deflection(in, out.proxy), 1e-3 * diag);
-      angle_kept = keeping >= 0.7 * linear;
-      if (keep_angle && !angle_kept) {
+      out.angle_kept = keeping >= 0.7 * linear;
+      if (keep_angle && !out.angle_kept) {
         linear = keeping;
-        out.proxy = pipeline::make_proxy(in, linear, angle, mend);
+        out.proxy = pipeline::make_proxy(in, linear, angle, mend_flat);
       }
     }
-    out.angle_kept = angle_kept;
     flat_seen = flat_seen || out.proxy.flat_facets > 0;
     DecomposeOptions dopt = opt.decompose;
     if (progress) dopt.progress = progress;
